@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// \brief Intersection counters: how much work a ray cost, independent of the machine.
+///
+/// Every call of rtab_component::intersect() and of the bounding-volume helpers counts
+/// here. The counters are per thread (no locks, no shared cache lines on the hot path);
+/// whoever owns the threads (the render driver) reads each thread's counts and sums them.
+/// They replace the thesis's `_INTRSCT_PRFM` counters, which had to be compiled in and
+/// cleared by hand; these are always on and never overflow in practice (64 bits).
+
+#include <cstdint>
+#include <iosfwd>
+
+namespace vl {
+
+/// \brief What one thread has counted since it started (or since the last snapshot).
+struct intersection_counts {
+    std::uint64_t primitive_tests = 0;       ///< intersect() calls on leaves
+    std::uint64_t composite_tests = 0;       ///< intersect() calls on composites
+    std::uint64_t bounding_volume_tests = 0; ///< box and sphere bound tests (vl/bounds.hh)
+    std::uint64_t misses = 0;                ///< intersect() calls that hit nothing at all
+    std::uint64_t composite_only = 0;        ///< composite hit, but none of its primitives
+
+    /// All intersect() calls: the thesis's `count()`.
+    std::uint64_t count() const { return primitive_tests + composite_tests; }
+    /// Calls that returned no object: the thesis's `NULL_count()`.
+    std::uint64_t null_count() const { return misses; }
+    /// Calls that returned t == 0 (no primitive hit): the thesis's `t0_count()`.
+    std::uint64_t t0_count() const { return misses + composite_only; }
+    /// Everything a ray cost: intersect() calls plus bounding-volume tests.
+    std::uint64_t total_tests() const { return count() + bounding_volume_tests; }
+
+    intersection_counts& operator+=(const intersection_counts& o);
+    intersection_counts& operator-=(const intersection_counts& o);
+    friend intersection_counts operator+(intersection_counts a, const intersection_counts& b) { return a += b; }
+    friend intersection_counts operator-(intersection_counts a, const intersection_counts& b) { return a -= b; }
+    friend bool operator==(const intersection_counts&, const intersection_counts&) = default;
+};
+
+std::ostream& operator<<(std::ostream& s, const intersection_counts& c);
+
+namespace detail {
+inline thread_local intersection_counts thread_counts;
+}
+
+/// This thread's counters. Snapshot before and after a piece of work and subtract to
+/// get what that work cost: `auto before = counts(); ...; auto cost = counts() - before;`
+inline const intersection_counts& counts() { return detail::thread_counts; }
+/// Sets this thread's counters to zero (the thesis's `clear_count()`).
+inline void clear_counts() { detail::thread_counts = {}; }
+
+}  // namespace vl
