@@ -1,0 +1,51 @@
+#pragma once
+// Test doubles for the component tree. Students need not read this file.
+#include <memory>
+#include <ostream>
+
+#include "vl/primitive.hh"
+#include "vl/rt_base_objects.hh"
+#include "vl/scene_reader.hh"
+
+namespace vl::test {
+
+/// A leaf that reports a hit at a fixed distance (or a miss when t <= 0), whatever the ray.
+class probe : public primitive {
+public:
+    explicit probe(double t = 0) : t_(t) {}
+    std::string type_name() const override { return "PROBE"; }
+    void read(scene_reader& in) override {
+        read_with_surface(in, {{"t", [&] { t_ = in.read_nonnegative("t of PROBE"); }}});
+    }
+    void write(std::ostream& s) const override {
+        s << "PROBE { t " << t_;
+        write_surface(s);
+        s << " }";
+    }
+    vector normal(const point&) const override { return {0, 0, 1}; }
+    point min_point() const override { return {-1, -1, -1}; }
+    point max_point() const override { return {t_, 1, 1}; }
+    double t() const { return t_; }
+
+private:
+    intersection find_intersection(const ray&) const override {
+        return t_ > zero_t() ? intersection::at(t_, this) : intersection::none();
+    }
+    double t_;
+};
+
+/// A composite with a bound that every ray enters: returns its nearest child hit, or
+/// "entered me but hit nothing" (the thesis's rule for composites).
+class bounded_probe_list : public rtab_composite {
+public:
+    std::string type_name() const override { return "BOUNDED"; }
+    void read(scene_reader& in) override { in.read_children(*this); }
+
+private:
+    intersection find_intersection(const ray& r) const override {
+        const intersection i = nearest_child_hit(r);
+        return i.hit() ? i : intersection::composite_only(this);
+    }
+};
+
+}  // namespace vl::test
