@@ -3,7 +3,7 @@
 #include <iosfwd>
 
 namespace vl::tuple_io {
-/// `name (a, b, c, d)` with round-trip precision.
+/// `name (a, b, c, d)` with round-trip precision; an empty name writes `(a, b, c, d)`.
 void write4(std::ostream& s, const char* name, double a, double b, double c, double d);
 /// Skips white space and an optional alphabetic label.
 void skip_label(std::istream& s);

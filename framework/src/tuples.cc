@@ -17,7 +17,8 @@ namespace tuple_io {
 
 void write4(std::ostream& s, const char* name, double a, double b, double c, double d) {
     const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
-    s << name << " (" << a << ", " << b << ", " << c << ", " << d << ')';
+    if (*name != '\0') s << name << ' ';
+    s << '(' << a << ", " << b << ", " << c << ", " << d << ')';
     s.precision(old_precision);
 }
 
@@ -26,13 +27,16 @@ void skip_label(std::istream& s) {
     while (s && std::isalpha(s.peek())) s.get();
 }
 
+static bool is_number_char(int c) { return std::isalnum(c) || c == '+' || c == '-' || c == '.'; }
+
 // Reads one number, accepting the `nan`, `inf` and `-inf` that `<<` writes for
 // non-finite values (operator>> for double does not), so every tuple round-trips.
+// Peeks once per character: a second peek after reaching the end of the input would set
+// failbit, and a tuple that ends the input would then read as an error.
 static bool read_number(std::istream& s, double& out) {
     s >> std::ws;
     std::string text;
-    while (s && (std::isalnum(s.peek()) || s.peek() == '+' || s.peek() == '-' || s.peek() == '.'))
-        text += static_cast<char>(s.get());
+    while (s && is_number_char(s.peek())) text += static_cast<char>(s.get());
     char* end = nullptr;
     const double v = text.empty() ? 0 : std::strtod(text.c_str(), &end);
     if (text.empty() || end != text.c_str() + text.size()) {

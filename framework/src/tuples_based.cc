@@ -12,6 +12,7 @@ namespace vl {
 std::ostream& operator<<(std::ostream& s, const color_point& cp) { return s << cp.clr() << ' ' << cp.pnt(); }
 
 std::istream& operator>>(std::istream& s, color_point& cp) {
+    tuple_io::skip_label(s);  // the color_point's own label; the colour may have one too
     color c;
     point p;
     if (s >> c >> p) cp = {c, p};
@@ -22,6 +23,15 @@ namespace homogeneous {
 color_point operator*(const color_point& cp, double d) { return {cp.clr(), cp.pnt() * d}; }
 color_point operator*(double d, const color_point& cp) { return cp * d; }
 color_point operator/(const color_point& cp, double d) { return {cp.clr(), cp.pnt() / d}; }
+color_point operator%(const color_point& a, const color_point& b) { return {a.clr(), a.pnt() % b.pnt()}; }
+color_point operator%(const vector& v, const color_point& cp) { return {cp.clr(), v % cp.pnt()}; }
+color_point& operator*=(color_point& cp, double d) { return cp = cp * d; }
+color_point& operator/=(color_point& cp, double d) { return cp = cp / d; }
+color_point& operator%=(color_point& cp, const vector& v) {
+    point p = cp.pnt();
+    cp.set_pnt(p %= v);
+    return cp;
+}
 }  // namespace homogeneous
 
 double matrix::determinant() const {
@@ -86,7 +96,8 @@ std::ostream& operator<<(std::ostream& s, const matrix& m) {
     s << "matrix [";
     for (int r = 0; r < 4; ++r) {
         const vector row = m.row(r);
-        tuple_io::write4(s, r == 0 ? "" : " ", row.x, row.y, row.z, row.w);
+        if (r > 0) s << ' ';
+        tuple_io::write4(s, "", row.x, row.y, row.z, row.w);
     }
     return s << ']';
 }

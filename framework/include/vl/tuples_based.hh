@@ -52,16 +52,24 @@ private:
     point pnt_;
 };
 
-/// `color (r, g, b, a) point (x, y, z, w)`; `>>` reads the colour, then the point, each
-/// with its optional label (`light clr 1 1 1 0 at 0 10 0 1`).
+/// `color (r, g, b, a) point (x, y, z, w)`; `>>` reads an optional label of its own, then
+/// the colour, then the point, each with its optional label (`light clr 1 1 1 0 at 0 10 0 1`).
 std::ostream& operator<<(std::ostream& s, const color_point& cp);
 std::istream& operator>>(std::istream& s, color_point& cp);
 
 namespace homogeneous {
 /// The protected operations of the thesis, applied to the point part (see vl::homogeneous).
+/// The dot products (`cp * v`, `v * cp`, `cp * cp`) need no overload: they use the
+/// point's, through the conversion to `const point&`.
 color_point operator*(const color_point& cp, double d);
 color_point operator*(double d, const color_point& cp);
 color_point operator/(const color_point& cp, double d);
+/// Cross products; the result keeps the colour of the color_point operand (of `a` in `a % b`).
+color_point operator%(const color_point& a, const color_point& b);
+color_point operator%(const vector& v, const color_point& cp);
+color_point& operator*=(color_point& cp, double d);
+color_point& operator/=(color_point& cp, double d);
+color_point& operator%=(color_point& cp, const vector& v);
 }  // namespace homogeneous
 
 /// \brief A 4x4 homogeneous transformation, stored row by row.
