@@ -8,7 +8,7 @@
 namespace vl {
 
 bool hits_box(const ray& r, const point& lo, const point& hi, double t_max, ray_span* span) {
-    ++detail::thread_counts.bounding_volume_tests;
+    ++detail::thread_tallies.bounding_volume;
     const double o[3] = {r.origin().x, r.origin().y, r.origin().z};
     const double d[3] = {r.direction().x, r.direction().y, r.direction().z};
     const double a[3] = {lo.x, lo.y, lo.z};
@@ -31,7 +31,7 @@ bool hits_box(const ray& r, const point& lo, const point& hi, double t_max, ray_
 }
 
 bool hits_sphere(const ray& r, const point& center, double radius) {
-    ++detail::thread_counts.bounding_volume_tests;
+    ++detail::thread_tallies.bounding_volume;
     // The ray misses when the centre is farther than the radius from the ray's line, or
     // when the sphere lies wholly behind the origin.
     const vector oc = center - r.origin();

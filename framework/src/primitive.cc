@@ -25,7 +25,7 @@ void primitive::write_surface(std::ostream& out) const {
     const surface d;
     const surface& s = surface_;
     const auto old_precision = out.precision(std::numeric_limits<double>::max_digits10);
-    if (s.clr != d.clr) out << " color " << s.clr;
+    if (s.clr != d.clr) out << " color (" << s.clr.r << ", " << s.clr.g << ", " << s.clr.b << ", " << s.clr.a << ')';
     if (s.kdr != d.kdr) out << " kdr " << s.kdr;
     if (s.ksr != d.ksr) out << " ksr " << s.ksr;
     if (s.kdt != d.kdt) out << " kdt " << s.kdt;

@@ -34,8 +34,49 @@ std::vector<std::string> registry::names() const {
     return out;
 }
 
+void registry::set_camera(camera_factory make) {
+    if (!make) throw usage_error("registry: set_camera() was given no factory");
+    camera_ = std::move(make);
+}
+
+void registry::add_sampler(std::string_view name, sampler_factory make) {
+    if (!make) throw usage_error("registry: sampler '" + std::string(name) + "' was given no factory");
+    if (!samplers_.emplace(name, std::move(make)).second)
+        throw usage_error("registry: sampler '" + std::string(name) + "' is already registered");
+}
+
+void registry::add_tracer(std::string_view name, tracer_factory make) {
+    if (!make) throw usage_error("registry: tracer '" + std::string(name) + "' was given no factory");
+    if (!tracers_.emplace(name, std::move(make)).second)
+        throw usage_error("registry: tracer '" + std::string(name) + "' is already registered");
+}
+
+std::unique_ptr<camera> registry::make_camera(const camera_settings& settings, int width, int height) const {
+    if (!camera_)
+        throw usage_error("no camera is registered: the pinhole camera is stage 01's piece "
+                          "(link it and call register_stage_01)");
+    return camera_(settings, width, height);
+}
+
+std::unique_ptr<sampler> registry::make_sampler(std::string_view name) const {
+    const auto it = samplers_.find(name);
+    if (it == samplers_.end())
+        throw usage_error("no sampler '" + std::string(name) +
+                          "' is registered: sample patterns are stage 01's pieces (link it and call register_stage_01)");
+    return it->second();
+}
+
+std::unique_ptr<tracer> registry::make_tracer(std::string_view name, const scene& s) const {
+    const auto it = tracers_.find(name);
+    if (it == tracers_.end())
+        throw usage_error("no tracer '" + std::string(name) + "' is registered (the whitted tracer is stage 04's piece)");
+    return it->second(s);
+}
+
 void register_framework(registry& r) {
     r.add("LIST", [] { return std::make_unique<object_list>(); });
+    r.add_tracer("flat", [](const scene& s) { return std::make_unique<flat_tracer>(s); });
+    r.add_tracer("normals", [](const scene& s) { return std::make_unique<normals_tracer>(s); });
 }
 
 }  // namespace vl

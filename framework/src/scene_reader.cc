@@ -271,8 +271,15 @@ double scene_reader::tuple_component(std::string_view what, const char* name) {
 
 void scene_reader::tuple_numbers(std::string_view what, const char* const names[4], double out[4],
                                  double default_last) {
-    // An optional label: a word directly followed by the numbers (the thesis's `center 0 0 0`).
-    if (peek().type == token::kind::word) next();
+    // An optional label: a word before the numbers (the thesis's `center pos 0 0 0`). A key
+    // of the block being read is never a label, so `eye look_at 0 0 0` says eye is missing.
+    if (peek().type == token::kind::word) {
+        const std::string& word = peek().text;
+        const bool is_key = !open_blocks_.empty() &&
+                            std::any_of(open_blocks_.back()->begin(), open_blocks_.back()->end(),
+                                        [&](const property& p) { return p.key == word; });
+        if (!is_key) next();
+    }
     const bool bracketed = accept('(');
     for (int i = 0; i < 3; ++i) {
         if (bracketed && i > 0) expect(',', "between the components of " + std::string(what));
@@ -335,6 +342,11 @@ void scene_reader::read_children(rtab_composite& parent) {
 void scene_reader::read_block(std::string_view owner, const std::vector<property>& properties) {
     const std::string who(owner);
     expect('{', "after " + who);
+    open_blocks_.push_back(&properties);
+    struct pop_on_exit {
+        std::vector<const std::vector<property>*>& blocks;
+        ~pop_on_exit() { blocks.pop_back(); }
+    } pop{open_blocks_};
     std::vector<source_location> seen(properties.size());
     std::vector<bool> given(properties.size(), false);
     while (!accept('}')) {

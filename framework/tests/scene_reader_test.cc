@@ -185,6 +185,7 @@ TEST_CASE("scene_reader: every malformed scene gets FILE:LINE:COL and what was e
         {"camera { fov 180 }\nPROBE { }", "bad.ray_trace:1:14: fov of camera must be less than 180 degrees"},
         {"camera { eye 1 2 3 look_at 1 2 3 }\nPROBE { }", "bad.ray_trace:1:8: camera eye and look_at are the same point"},
         {"camera { up 0 0 1 }\nPROBE { }", "bad.ray_trace:1:8: camera up is parallel to the view direction"},
+        {"camera { eye look_at 0 0 0 }\nPROBE { }", "bad.ray_trace:1:14: expected a number for x of eye of camera, found 'look_at'"},
         // bad tokens, strings and includes
         {"PROBE { t 1 } @", "bad.ray_trace:1:15: unexpected character '@'"},
         {"PROBE { t 1 }\n\x01", "bad.ray_trace:2:1: unexpected character byte 0x1"},

@@ -9,16 +9,21 @@
 #include <string_view>
 #include <vector>
 
+#include "vl/camera.hh"
 #include "vl/rt_base_objects.hh"
+#include "vl/scene.hh"
+#include "vl/tracer.hh"
 
 namespace vl {
 
-/// \brief Maps a scene file's type names to factories: the thesis's `get_type()`,
-/// without the if-else chain to edit.
+/// \brief Every piece a scene can name, and the factories behind the names: the
+/// thesis's `get_type()`, without the if-else chain to edit.
 ///
-/// Each stage binds its names in its `register_stage_NN(registry&)`; the framework binds
-/// its own (`LIST`) in register_framework(). A name is 1 to 10 upper-case letters A-Z,
-/// as in the thesis, so it can never be mistaken for a keyword or a number.
+/// Object types (`SPHERE`, `BVH`, ...), tracers (`flat`, `whitted`), pixel sample
+/// patterns (`center`, `jittered`) and the camera. Each stage binds its pieces in its
+/// `register_stage_NN(registry&)`; the framework binds its own (`LIST`, `flat`,
+/// `normals`) in register_framework(). An object type name is 1 to 10 upper-case letters
+/// A-Z, as in the thesis, so it can never be mistaken for a keyword or a number.
 class registry {
 public:
     /// Makes a new, default-constructed object; the scene reader then calls its read().
@@ -36,11 +41,36 @@ public:
     /// True when `name` is 1 to 10 upper-case letters.
     static bool valid_name(std::string_view name);
 
+    /// Makes the camera for a scene's settings and an image of `width` x `height`.
+    using camera_factory = std::function<std::unique_ptr<camera>(const camera_settings&, int width, int height)>;
+    /// Makes a pixel sample pattern.
+    using sampler_factory = std::function<std::unique_ptr<sampler>()>;
+    /// Makes a tracer for a scene (which must outlive it).
+    using tracer_factory = std::function<std::unique_ptr<tracer>(const scene&)>;
+
+    /// Sets the camera (one per program; stage 01's pinhole camera).
+    void set_camera(camera_factory make);
+    /// Binds a sample pattern's name (`center`, `grid`, ...).
+    void add_sampler(std::string_view name, sampler_factory make);
+    /// Binds a tracer's name (`flat`, `whitted`, ...).
+    void add_tracer(std::string_view name, tracer_factory make);
+
+    /// The camera for `settings`; throws vl::usage_error when no camera is registered.
+    std::unique_ptr<camera> make_camera(const camera_settings& settings, int width, int height) const;
+    /// The sample pattern `name`; throws vl::usage_error when it is not registered.
+    std::unique_ptr<sampler> make_sampler(std::string_view name) const;
+    /// The tracer `name` for `s`; throws vl::usage_error when it is not registered.
+    std::unique_ptr<tracer> make_tracer(std::string_view name, const scene& s) const;
+
 private:
     std::map<std::string, factory, std::less<>> factories_;
+    camera_factory camera_;
+    std::map<std::string, sampler_factory, std::less<>> samplers_;
+    std::map<std::string, tracer_factory, std::less<>> tracers_;
 };
 
-/// Binds the framework's own types: `LIST` (vl::object_list).
+/// Binds the framework's own pieces: the `LIST` type (vl::object_list) and the `flat`
+/// and `normals` tracers.
 void register_framework(registry& r);
 
 }  // namespace vl

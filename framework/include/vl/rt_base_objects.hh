@@ -42,11 +42,11 @@ public:
     /// The first hit of `r` with this object, following the rules written at
     /// vl::intersection. Counts one test in this thread's counters.
     intersection intersect(const ray& r) const {
-        intersection_counts& c = detail::thread_counts;
-        ++(composite_ ? c.composite_tests : c.primitive_tests);
         const intersection i = find_intersection(r);
-        c.misses += i.object == nullptr;
-        c.composite_only += i.is_composite_only();
+        const int outcome = i.object == nullptr ? detail::miss_outcome
+                            : i.t == 0          ? detail::composite_only_outcome
+                                                : detail::hit_outcome;
+        ++detail::thread_tallies.calls[composite_][outcome];
         return i;
     }
 
@@ -74,7 +74,7 @@ public:
     /// again through round-off ("acne"). A negative zero_t() marks an object meant to be
     /// seen from inside; intersect() then compares with its absolute value.
     virtual double zero_t() const { return default_zero_t; }
-    static constexpr double default_zero_t = 1e-6;
+    static constexpr double default_zero_t = 1e-6;  ///< zero_t() of an object that does not override it
 
     /// Reads the object's description (what follows its type name in a scene file).
     /// Default: nothing to read.
@@ -126,7 +126,7 @@ public:
 
     /// The children, in insertion order.
     std::span<const std::unique_ptr<rtab_component>> children() const { return children_; }
-    std::size_t num_children() const { return children_.size(); }
+    std::size_t num_children() const { return children_.size(); }  ///< how many children
 
     /// The union of the children's boxes; NaN_point if any child's box is unknown.
     point min_point() const override;
@@ -139,7 +139,7 @@ protected:
     /// The nearest primitive hit among all children (no bound: a miss is a miss).
     intersection nearest_child_hit(const ray& r) const;
 
-    std::vector<std::unique_ptr<rtab_component>> children_;
+    std::vector<std::unique_ptr<rtab_component>> children_;  ///< the owned children, in insertion order
 };
 
 /// Writes `c` in the scene format (the thesis's `<<` for components).

@@ -135,6 +135,7 @@ private:
 
     const registry& types_;
     std::vector<std::unique_ptr<source>> sources_;
+    std::vector<const std::vector<property>*> open_blocks_;  // innermost last: their keys are never labels
     token lookahead_;
     bool has_lookahead_ = false;
 };

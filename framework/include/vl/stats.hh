@@ -30,23 +30,51 @@ struct intersection_counts {
     /// Everything a ray cost: intersect() calls plus bounding-volume tests.
     std::uint64_t total_tests() const { return count() + bounding_volume_tests; }
 
+    /// \name Arithmetic
+    ///@{
+
+    /// Counter by counter: add up threads with `+`, get the cost of a piece of work
+    /// as the difference of two snapshots with `-`.
     intersection_counts& operator+=(const intersection_counts& o);
     intersection_counts& operator-=(const intersection_counts& o);
     friend intersection_counts operator+(intersection_counts a, const intersection_counts& b) { return a += b; }
     friend intersection_counts operator-(intersection_counts a, const intersection_counts& b) { return a -= b; }
+    ///@}
+    /// Equal in every counter (`!=` is generated from it).
     friend bool operator==(const intersection_counts&, const intersection_counts&) = default;
 };
 
-std::ostream& operator<<(std::ostream& s, const intersection_counts& c);
-
 namespace detail {
-inline thread_local intersection_counts thread_counts;
-}
+/// \brief The raw per-thread tallies behind vl::counts(): one increment per call.
+///
+/// intersect() adds 1 to a single cell chosen by what was called (leaf or composite) and
+/// what it returned (hit, miss, composite-only), so the hot path pays one memory
+/// increment; counts() turns the table into named totals.
+struct tallies {
+    std::uint64_t calls[2][3] = {};       ///< [is composite][outcome]
+    std::uint64_t bounding_volume = 0;    ///< bounding-volume tests
+};
+enum outcome { hit_outcome = 0, miss_outcome = 1, composite_only_outcome = 2 };
+// constinit: no dynamic initialiser, so every access is a plain TLS load (no wrapper call).
+inline constinit thread_local tallies thread_tallies;
+}  // namespace detail
 
 /// This thread's counters. Snapshot before and after a piece of work and subtract to
 /// get what that work cost: `auto before = counts(); ...; auto cost = counts() - before;`
-inline const intersection_counts& counts() { return detail::thread_counts; }
+inline intersection_counts counts() {
+    const detail::tallies& t = detail::thread_tallies;
+    intersection_counts c;
+    c.primitive_tests = t.calls[0][0] + t.calls[0][1] + t.calls[0][2];
+    c.composite_tests = t.calls[1][0] + t.calls[1][1] + t.calls[1][2];
+    c.misses = t.calls[0][1] + t.calls[1][1];
+    c.composite_only = t.calls[0][2] + t.calls[1][2];
+    c.bounding_volume_tests = t.bounding_volume;
+    return c;
+}
 /// Sets this thread's counters to zero (the thesis's `clear_count()`).
-inline void clear_counts() { detail::thread_counts = {}; }
+inline void clear_counts() { detail::thread_tallies = {}; }
+
+/// Writes the five counters, each after its name: `primitive tests 3, composite tests 1, ...`.
+std::ostream& operator<<(std::ostream& s, const intersection_counts& c);
 
 }  // namespace vl

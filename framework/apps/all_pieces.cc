@@ -1,0 +1,14 @@
+#include "all_pieces.hh"
+
+#include "stage_01.hh"
+#include "stage_02.hh"
+
+namespace vl {
+
+void register_all_pieces(registry& r) {
+    register_framework(r);
+    stage01::register_stage_01(r);
+    stage02::register_stage_02(r);
+}
+
+}  // namespace vl

@@ -1,0 +1,159 @@
+// rt: render a scene file to an image, without a window.
+//
+//   rt SCENE -o OUT.png [--size WxH] [--spp N] [--sampler NAME] [--threads N]
+//      [--heatmap HEAT.png] [--stats]
+#include <malloc.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "all_pieces.hh"
+#include "heat_map.hh"
+#include "vl/error.hh"
+#include "vl/image_io.hh"
+#include "vl/render.hh"
+#include "vl/scene.hh"
+
+namespace {
+
+constexpr const char* usage =
+    "usage: rt SCENE -o OUT [--size WxH] [--spp N] [--sampler NAME] [--threads N]\n"
+    "          [--heatmap HEAT.png] [--stats]\n"
+    "  SCENE            a .ray_trace file (docs/scene-format.md)\n"
+    "  -o OUT           the image to write: .png, .ppm or .pgm (8-bit sRGB), .pfm (linear float)\n"
+    "  --size WxH       image size in pixels (default: the scene's size)\n"
+    "  --spp N          samples per pixel (default: the scene's samples)\n"
+    "  --sampler NAME   center, grid, jittered or random (default: the scene's sampler)\n"
+    "  --threads N      worker threads (default: one per core)\n"
+    "  --heatmap FILE   also write the intersection heat map, with its colour scale\n"
+    "  --stats          print rays, tests per ray, time and memory\n";
+
+/// A command-line mistake: the message is printed as `rt: MESSAGE` with a hint.
+struct usage_error {
+    std::string message;
+};
+
+int to_int(std::string_view flag, std::string_view text, int lo, int hi) {
+    int v = 0;
+    const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (err != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
+        throw usage_error{std::string(flag) + " wants a whole number from " + std::to_string(lo) + " to " +
+                          std::to_string(hi) + ", not '" + std::string(text) + "'"};
+    return v;
+}
+
+struct options {
+    std::string scene, output, heatmap, sampler;
+    std::optional<std::pair<int, int>> size;
+    std::optional<int> spp;
+    int threads = 0;
+    bool stats = false;
+};
+
+options parse(int argc, char** argv) {
+    options o;
+    for (int k = 1; k < argc; ++k) {
+        const std::string_view a = argv[k];
+        auto value = [&]() -> std::string_view {
+            if (k + 1 >= argc) throw usage_error{std::string(a) + " needs a value"};
+            return argv[++k];
+        };
+        if (a == "-h" || a == "--help") {
+            std::cout << usage;
+            std::exit(0);
+        } else if (a == "-o") {
+            o.output = value();
+        } else if (a == "--heatmap") {
+            o.heatmap = value();
+        } else if (a == "--sampler") {
+            o.sampler = value();
+        } else if (a == "--spp") {
+            o.spp = to_int(a, value(), 1, 4096);
+        } else if (a == "--threads") {
+            o.threads = to_int(a, value(), 1, 1024);
+        } else if (a == "--stats") {
+            o.stats = true;
+        } else if (a == "--size") {
+            const std::string_view v = value();
+            const auto x = v.find('x');
+            if (x == std::string_view::npos) throw usage_error{"--size wants WIDTHxHEIGHT, like 640x480, not '" + std::string(v) + "'"};
+            o.size = {{to_int("--size width", v.substr(0, x), 1, vl::max_image_side),
+                       to_int("--size height", v.substr(x + 1), 1, vl::max_image_side)}};
+        } else if (!a.empty() && a[0] == '-') {
+            throw usage_error{"unknown option '" + std::string(a) + "'"};
+        } else if (o.scene.empty()) {
+            o.scene = a;
+        } else {
+            throw usage_error{"one scene at a time: '" + o.scene + "' and '" + std::string(a) + "'"};
+        }
+    }
+    if (o.scene.empty()) throw usage_error{"no scene file given"};
+    if (o.output.empty()) throw usage_error{"no output image given (-o OUT.png)"};
+    return o;
+}
+
+std::size_t heap_in_use() { return mallinfo2().uordblks; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const options opt = parse(argc, argv);
+        vl::registry types;
+        vl::register_all_pieces(types);
+
+        const std::size_t heap_before = heap_in_use();
+        vl::scene s = vl::read_scene(opt.scene, types);
+        const std::size_t scene_bytes = heap_in_use() - heap_before;
+        if (opt.size) std::tie(s.width, s.height) = *opt.size;
+        if (opt.spp) s.samples_per_pixel = *opt.spp;
+        if (!opt.sampler.empty()) {
+            if (std::find(std::begin(vl::sampler_names), std::end(vl::sampler_names), opt.sampler) ==
+                std::end(vl::sampler_names))
+                throw usage_error{"--sampler: unknown sampler '" + opt.sampler + "' (center, grid, jittered, random)"};
+            s.sampler = opt.sampler;
+        }
+
+        // Model no more than the scene needs: 8-bit sRGB for 8-bit files, float for PFM.
+        const bool linear = std::filesystem::path(opt.output).extension() == ".pfm";
+        vl::vfb image(s.width - 1, s.height - 1, linear ? "rgbf" : "rgb8");
+        vl::render_options ro;
+        ro.threads = opt.threads;
+        const vl::render_stats st = vl::render(s, types, image, ro);
+        image.save(opt.output);
+
+        std::uint32_t most = 0;
+        if (!opt.heatmap.empty()) {
+            vl::vfb heat(s.width + vl::heat_scale_gap + vl::heat_scale_width - 1, s.height - 1, "rgb8");
+            most = vl::draw_heat_map(st.tests_per_pixel, s.width, s.height, heat);
+            heat.save(opt.heatmap);
+        }
+        if (opt.stats) {
+            const double rays = static_cast<double>(std::max<std::uint64_t>(st.primary_rays, 1));
+            std::printf("scene           %s (%d objects at the top level)\n", opt.scene.c_str(),
+                        static_cast<int>(s.root->num_children()));
+            std::printf("image           %d x %d, %d samples per pixel (%s), %d threads\n", s.width, s.height,
+                        s.samples_per_pixel, s.sampler.c_str(), st.threads);
+            std::printf("rays            %llu primary\n", static_cast<unsigned long long>(st.primary_rays));
+            std::printf("primitive tests %.2f per ray\n", static_cast<double>(st.counts.primitive_tests) / rays);
+            std::printf("composite tests %.2f per ray\n", static_cast<double>(st.counts.composite_tests) / rays);
+            std::printf("bounding tests  %.2f per ray\n", static_cast<double>(st.counts.bounding_volume_tests) / rays);
+            if (!opt.heatmap.empty()) std::printf("heat map        0 (black) to %u (white) tests per pixel\n", most);
+            std::printf("time            %.3f s\n", st.seconds);
+            std::printf("memory          scene model %.1f KiB, frame buffer %.1f KiB (%s, %zu bytes per pixel)\n",
+                        static_cast<double>(scene_bytes) / 1024.0, static_cast<double>(image.bytes_per_pixel()) * s.width * s.height / 1024.0, std::string(image.storage_name()).c_str(),
+                        image.bytes_per_pixel());
+        }
+        return 0;
+    } catch (const usage_error& e) {
+        std::fprintf(stderr, "rt: %s (rt --help shows the options)\n", e.message.c_str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "rt: %s\n", e.what());
+    }
+    return 1;
+}

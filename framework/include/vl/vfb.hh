@@ -1,0 +1,253 @@
+#pragma once
+/// \file
+/// \brief The virtual frame buffer: vl::vfb.
+
+#include "vl/image_io.hh"
+#include "vl/pixel.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <typeinfo>
+#include <vector>
+
+namespace vl {
+
+/// The thesis's `vfb_int`: an int that counts *virtual* pixels.
+using vfb_int = int;
+
+/// \brief A put_pixel() or get_pixel() outside the buffer; what() gives the coordinates and
+/// the bounds.
+class vfb_range_error : public std::out_of_range {
+public:
+    /// Builds the message `vfb: pixel (x, y) is outside (0, 0)..(max_x, max_y)`.
+    vfb_range_error(vfb_int x, vfb_int y, vfb_int max_x, vfb_int max_y);
+};
+
+namespace detail {
+
+// What vfb needs from a storage, whatever it is; storage_model<S> implements it for a
+// storage policy S. Rows are given by the index of their first cell; n cells follow.
+class storage_interface {
+public:
+    virtual ~storage_interface() = default;
+    virtual std::string_view name() const = 0;
+    virtual std::size_t bytes_per_pixel() const = 0;
+    virtual int natural_channels() const = 0;
+    virtual const std::type_info& storage_type() const = 0;
+    virtual void* cells() = 0;
+    virtual void put(std::size_t i, const vfb_pixel& p) = 0;
+    virtual vfb_pixel get(std::size_t i) const = 0;
+    virtual void clear() = 0;
+    // Bulk: read n cells as 8-bit sRGB or linear float samples with `channels` channels
+    // (1 gray, 2 gray+alpha, 3 RGB, 4 RGBA), or replace n cells with them (a load, so no
+    // z rule: what was there is cleared first).
+    virtual void read_srgb8(std::size_t first, std::size_t n, int channels, std::uint8_t* out) const = 0;
+    virtual void read_linear(std::size_t first, std::size_t n, int channels, float* out) const = 0;
+    virtual void write_srgb8(std::size_t first, std::size_t n, int channels, const std::uint8_t* in) = 0;
+    virtual void write_linear(std::size_t first, std::size_t n, int channels, const float* in) = 0;
+};
+
+template <class S> constexpr bool has_alpha() {
+    if constexpr (requires { S::has_alpha; }) return S::has_alpha;
+    else return false;
+}
+template <class S> constexpr int srgb8_channels() {
+    if constexpr (requires { S::srgb8_channels; }) return S::srgb8_channels;
+    else return 0;
+}
+
+// Spreads a vfb_pixel over `channels` samples: gray is luminance, alpha is az for storages
+// that keep alpha and opaque for the others.
+template <class S> void pixel_to_linear(const vfb_pixel& p, int channels, float* out) {
+    const double alpha = has_alpha<S>() ? p.az() : 1.0;
+    switch (channels) {
+    case 1: out[0] = static_cast<float>(p.gray()); break;
+    case 2: out[0] = static_cast<float>(p.gray()); out[1] = static_cast<float>(alpha); break;
+    case 3: out[0] = static_cast<float>(p.r()); out[1] = static_cast<float>(p.g()); out[2] = static_cast<float>(p.b()); break;
+    default:
+        out[0] = static_cast<float>(p.r()); out[1] = static_cast<float>(p.g()); out[2] = static_cast<float>(p.b());
+        out[3] = static_cast<float>(alpha);
+    }
+}
+template <class S> vfb_pixel linear_to_pixel(int channels, const float* in) {
+    const bool gray = channels <= 2, alpha = channels == 2 || channels == 4;
+    const double az = has_alpha<S>() && alpha ? in[channels - 1] : vfb_pixel::no_az;
+    return gray ? vfb_pixel(az, in[0], in[0], in[0]) : vfb_pixel(az, in[0], in[1], in[2]);
+}
+
+template <class S> class storage_model final : public storage_interface {
+public:
+    explicit storage_model(std::size_t n) : cells_(n) { clear(); }
+    std::string_view name() const override { return S::name; }
+    std::size_t bytes_per_pixel() const override { return S::bytes_per_pixel; }
+    int natural_channels() const override { return S::natural_channels; }
+    const std::type_info& storage_type() const override { return typeid(S); }
+    void* cells() override { return cells_.data(); }
+    void put(std::size_t i, const vfb_pixel& p) override { S::store(cells_[i], p); }
+    vfb_pixel get(std::size_t i) const override { return S::load(cells_[i]); }
+    void clear() override { for (auto& c : cells_) S::clear(c); }
+
+    void read_srgb8(std::size_t first, std::size_t n, int channels, std::uint8_t* out) const override {
+        if (channels == srgb8_channels<S>()) {  // the cells are the file's bytes: one copy
+            std::memcpy(out, &cells_[first], n * sizeof(typename S::cell));
+            return;
+        }
+        float lin[4];
+        for (std::size_t i = 0; i < n; ++i) {
+            pixel_to_linear<S>(S::load(cells_[first + i]), channels, lin);
+            for (int c = 0; c < channels; ++c) {
+                const bool alpha = (channels == 2 || channels == 4) && c == channels - 1;
+                out[i * channels + c] = alpha ? static_cast<std::uint8_t>(std::lround(std::clamp(lin[c], 0.0f, 1.0f) * 255))
+                                              : linear_to_srgb8(lin[c]);
+            }
+        }
+    }
+    void read_linear(std::size_t first, std::size_t n, int channels, float* out) const override {
+        for (std::size_t i = 0; i < n; ++i) pixel_to_linear<S>(S::load(cells_[first + i]), channels, out + i * channels);
+    }
+    void write_srgb8(std::size_t first, std::size_t n, int channels, const std::uint8_t* in) override {
+        if (channels == srgb8_channels<S>()) {
+            std::memcpy(&cells_[first], in, n * sizeof(typename S::cell));
+            return;
+        }
+        float lin[4];
+        for (std::size_t i = 0; i < n; ++i) {
+            for (int c = 0; c < channels; ++c) {
+                const bool alpha = (channels == 2 || channels == 4) && c == channels - 1;
+                const std::uint8_t v = in[i * channels + c];
+                lin[c] = alpha ? v / 255.0f : srgb8_to_linear(v);
+            }
+            replace(cells_[first + i], linear_to_pixel<S>(channels, lin));
+        }
+    }
+    void write_linear(std::size_t first, std::size_t n, int channels, const float* in) override {
+        for (std::size_t i = 0; i < n; ++i) replace(cells_[first + i], linear_to_pixel<S>(channels, in + i * channels));
+    }
+
+private:
+    static void replace(typename S::cell& c, const vfb_pixel& p) { S::clear(c); S::store(c, p); }
+    std::vector<typename S::cell> cells_;
+};
+
+}  // namespace detail
+
+/// \brief The virtual frame buffer: a (max_x + 1) x (max_y + 1) grid of pixels with (0, 0)
+/// at the **lower left**, kept in a storage of the caller's choice.
+///
+/// Client code writes vl::vfb_pixel values with put_pixel() and reads them back with
+/// get_pixel(); how they are stored (see pixel.hh) is chosen once, when the buffer is
+/// made, and client code does not change with it:
+///
+/// ```
+/// vl::vfb v(639, 479);                                    // vl::storage_class (8-bit RGB)
+/// auto z = vl::vfb::with_storage<vl::zbuffer_storage>(639, 479);  // by type, one line
+/// vl::vfb a(639, 479, settings.storage);                  // by name from a scene: "aa4"
+/// v.put_pixel(0, 0, vl::vfb_pixel(1.0, 0.5, 0.0));        // lower-left pixel, orange
+/// v.save("out.png");                                      // (0, 0) is the file's last row
+/// ```
+///
+/// **Why type-erased.** The thesis fixed the storage at compile time for the whole program.
+/// Here one program (`rt`, the Tk widget, the grader) holds buffers of different storages,
+/// and DESIGN.md asks that a scene pick the storage it needs and no more, which is only
+/// known after the scene file is read. So vl::vfb holds its cells behind a small internal
+/// interface, chosen by name or by template argument. The cost is one virtual call per
+/// put_pixel(), a few nanoseconds against the microseconds a traced ray costs. Code that
+/// needs raw speed on a known storage takes the typed path, cells<S>() or row<S>(), and
+/// load() and save() move whole rows at a time (the thesis's known problem was one pixel
+/// at a time).
+///
+/// Coordinates outside the buffer throw vl::vfb_range_error; nothing is ever written
+/// outside it.
+class vfb {
+public:
+    /// A buffer with pixels (0, 0) to (max_x, max_y), in vl::storage_class.
+    vfb(vfb_int max_x, vfb_int max_y);
+    /// A buffer in the storage named `storage` (see storage_names()); throws
+    /// std::invalid_argument for an unknown name.
+    vfb(vfb_int max_x, vfb_int max_y, std::string_view storage);
+    /// A buffer in storage S (any storage policy, including your own).
+    template <class S> static vfb with_storage(vfb_int max_x, vfb_int max_y) {
+        return vfb(max_x, max_y, std::make_unique<detail::storage_model<S>>(checked_pixels(max_x, max_y)));
+    }
+    /// The names of the built-in storages: bw, gray8, rgb8, rgbf, zrgb, rgba, aa2, aa3, aa4.
+    static std::vector<std::string_view> storage_names();
+
+    /// Moves the pixels; the moved-from buffer may only be assigned to or destroyed.
+    vfb(vfb&&) noexcept = default;
+    vfb& operator=(vfb&&) noexcept = default;  ///< Moves the pixels.
+    ~vfb();                                    ///< Frees the pixels.
+
+    vfb_int max_x() const { return max_x_; }    ///< Largest x coordinate.
+    vfb_int max_y() const { return max_y_; }    ///< Largest y coordinate.
+    int width() const { return max_x_ + 1; }    ///< Pixels per row (max_x + 1).
+    int height() const { return max_y_ + 1; }   ///< Rows (max_y + 1).
+    /// The storage's name, e.g. "rgb8".
+    std::string_view storage_name() const { return storage_->name(); }
+    /// Memory one pixel takes in this storage.
+    std::size_t bytes_per_pixel() const { return storage_->bytes_per_pixel(); }
+    /// True if (x, y) is a pixel of this buffer.
+    bool contains(vfb_int x, vfb_int y) const { return x >= 0 && y >= 0 && x <= max_x_ && y <= max_y_; }
+
+    /// Writes `p` at (x, y) by the storage's rule (a z-buffer keeps the nearer pixel, an
+    /// antialiased storage the sample's sub-pixel).
+    void put_pixel(vfb_int x, vfb_int y, const vfb_pixel& p) { storage_->put(index(x, y), p); }
+    /// Writes a pixel made with coordinates at the pixel those coordinates fall in.
+    void put_pixel(const vfb_pixel& p);
+    /// The pixel at (x, y) as the storage keeps it (averaged over sub-pixels, if any).
+    vfb_pixel get_pixel(vfb_int x, vfb_int y) const { return storage_->get(index(x, y)); }
+    /// Clears every pixel (black; az -infinity; transparent for alpha storages).
+    void clear() { storage_->clear(); }
+
+    /// Reads an image file (vl::read_image) and places its **lower-left** pixel at
+    /// (x1, y1); what falls outside the buffer is clipped. Loaded pixels replace what was
+    /// there (no z rule).
+    void load(const std::filesystem::path& file, vfb_int x1 = 0, vfb_int y1 = 0);
+    /// Writes the buffer to a file; the format follows the extension (vl::write_image):
+    /// 8-bit sRGB for .png/.ppm/.pgm/.pbm/.pnm (gray storages as gray, rgba with alpha in
+    /// PNG), linear float for .pfm. Pixel (0, 0) is the first pixel of the file's last row.
+    void save(const std::filesystem::path& file) const;
+
+    /// The whole buffer as an image, rows top to bottom as files store them. 8-bit and
+    /// 16-bit samples are sRGB-encoded, float samples linear; `channels` 0 means the
+    /// storage's natural count (1 for gray storages, 4 for rgba, else 3).
+    image to_image(sample_type type = sample_type::u8, int channels = 0) const;
+    /// Places an image with its lower-left pixel at (x1, y1), clipped to the buffer.
+    void from_image(const image& img, vfb_int x1 = 0, vfb_int y1 = 0);
+
+    /// True if the buffer's storage is S.
+    template <class S> bool holds() const { return storage_->storage_type() == typeid(S); }
+    /// The typed fast path: all cells, row 0 (the bottom) first; cell (x, y) is at
+    /// `y * width() + x`. Throws std::logic_error if the storage is not S.
+    template <class S> std::span<typename S::cell> cells() {
+        if (!holds<S>())
+            throw std::logic_error("vfb::cells: the buffer holds " + std::string(storage_name()) + ", not " +
+                                   std::string(S::name));
+        return {static_cast<typename S::cell*>(storage_->cells()), static_cast<std::size_t>(width()) * height()};
+    }
+    /// Row y (0 is the bottom) of the typed fast path; throws vl::vfb_range_error for a
+    /// row outside the buffer.
+    template <class S> std::span<typename S::cell> row(vfb_int y) {
+        return cells<S>().subspan(index(0, y), static_cast<std::size_t>(width()));
+    }
+
+private:
+    vfb(vfb_int max_x, vfb_int max_y, std::unique_ptr<detail::storage_interface> storage);
+    static std::size_t checked_pixels(vfb_int max_x, vfb_int max_y);
+    std::size_t index(vfb_int x, vfb_int y) const {
+        if (!contains(x, y)) throw vfb_range_error(x, y, max_x_, max_y_);
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(width()) + static_cast<std::size_t>(x);
+    }
+
+    vfb_int max_x_ = 0, max_y_ = 0;
+    std::unique_ptr<detail::storage_interface> storage_;
+};
+
+}  // namespace vl
