@@ -51,3 +51,24 @@ TEST_CASE("registry: the framework registers LIST and names come back sorted", "
     REQUIRE(list);
     CHECK(list->is_composite());
 }
+
+TEST_CASE("registry: tracers are made by name; the framework brings flat and normals", "[rt][registry]") {
+    registry r;
+    register_framework(r);
+    const scene s;
+    CHECK(dynamic_cast<flat_tracer*>(r.make_tracer("flat", s).get()) != nullptr);
+    CHECK(dynamic_cast<normals_tracer*>(r.make_tracer("normals", s).get()) != nullptr);
+    CHECK_THROWS_WITH(r.make_tracer("whitted", s), Catch::Contains("no tracer 'whitted' is registered") &&
+                                                       Catch::Contains("stage 04"));
+    CHECK_THROWS_AS(r.add_tracer("flat", [](const scene& sc) { return std::make_unique<flat_tracer>(sc); }), usage_error);
+}
+
+TEST_CASE("registry: without stage 01, asking for a camera or sampler says which stage brings it", "[rt][registry]") {
+    registry r;
+    register_framework(r);
+    CHECK_THROWS_WITH(r.make_camera(camera_settings{}, 4, 4), Catch::Contains("no camera is registered") &&
+                                                                  Catch::Contains("stage 01"));
+    CHECK_THROWS_WITH(r.make_sampler("grid"), Catch::Contains("no sampler 'grid' is registered"));
+    CHECK_THROWS_AS(r.set_camera(nullptr), usage_error);
+    CHECK_THROWS_AS(r.add_sampler("grid", nullptr), usage_error);
+}
