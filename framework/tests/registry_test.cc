@@ -52,7 +52,7 @@ TEST_CASE("registry: the framework registers LIST and names come back sorted", "
     CHECK(list->is_composite());
 }
 
-TEST_CASE("registry: tracers are made by name; the framework brings flat and normals", "[rt][registry]") {
+TEST_CASE("registry: tracers are made by name, and the framework brings flat and normals", "[rt][registry]") {
     registry r;
     register_framework(r);
     const scene s;

@@ -196,7 +196,7 @@ TEST_CASE("bounds: a box test counts one bounding-volume test and finds the span
     CHECK(counts().bounding_volume_tests == 3);
 }
 
-TEST_CASE("bounds: a ray starting inside a box hits it; one in the plane of a face is handled", "[rt][bounds]") {
+TEST_CASE("bounds: a ray starting inside a box hits it, and one in the plane of a face is handled", "[rt][bounds]") {
     CHECK(hits_box(ray(point(0.5, 0.5, 0.5), vector(0, 0, 1)), point(0, 0, 0), point(1, 1, 1)));
     // Parallel to the x slabs and lying in the plane x == 0: inside the closed slab.
     CHECK(hits_box(ray(point(0, 0.5, -3), vector(0, 0, 1)), point(0, 0, 0), point(1, 1, 1)));
