@@ -145,6 +145,8 @@ int main(int argc, char** argv) {
             std::printf("bounding tests  %.2f per ray\n", static_cast<double>(st.counts.bounding_volume_tests) / rays);
             if (!opt.heatmap.empty()) std::printf("heat map        0 (black) to %u (white) tests per pixel\n", most);
             std::printf("time            %.3f s\n", st.seconds);
+            std::printf("wrote           %s%s%s\n", opt.output.c_str(), opt.heatmap.empty() ? "" : " and ",
+                        opt.heatmap.c_str());
             std::printf("memory          scene model %.1f KiB, frame buffer %.1f KiB (%s, %zu bytes per pixel)\n",
                         static_cast<double>(scene_bytes) / 1024.0, static_cast<double>(image.bytes_per_pixel()) * s.width * s.height / 1024.0, std::string(image.storage_name()).c_str(),
                         image.bytes_per_pixel());
