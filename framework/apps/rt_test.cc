@@ -47,6 +47,15 @@ TEST_CASE("rt: renders the sample scene to a PNG of the requested size", "[rt]")
     const image img = read_image(out);
     CHECK(img.width() == 80);
     CHECK(img.height() == 60);
+    // ImageMagick reads it too, with the same size (tools/setup installs it).
+    if (std::system("command -v identify >/dev/null 2>&1") == 0) {
+        FILE* pipe = popen(("identify -format '%w %h %m' " + out.string()).c_str(), "r");
+        REQUIRE(pipe);
+        char text[64] = {};
+        const std::size_t n = std::fread(text, 1, sizeof text - 1, pipe);
+        pclose(pipe);
+        CHECK(std::string(text, n) == "80 60 PNG");
+    }
 }
 
 TEST_CASE("rt: writes a heat map with its colour scale along the right edge", "[rt]") {
