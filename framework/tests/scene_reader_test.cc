@@ -11,13 +11,7 @@ using namespace vl;
 
 namespace {
 
-registry test_types() {
-    registry r;
-    register_framework(r);
-    r.add("PROBE", [] { return std::make_unique<test::probe>(); });
-    r.add("BOUNDED", [] { return std::make_unique<test::bounded_probe_list>(); });
-    return r;
-}
+registry test_types() { return test::probe_types(); }
 
 /// The message parse_scene throws for `text`, or "" when it does not throw.
 std::string error_for(const std::string& text) {

@@ -9,12 +9,7 @@
 using namespace vl;
 
 namespace {
-registry test_types() {
-    registry r;
-    register_framework(r);
-    r.add("PROBE", [] { return std::make_unique<test::probe>(); });
-    return r;
-}
+registry test_types() { return test::probe_types(); }
 }  // namespace
 
 TEST_CASE("scene: everything optional has a default", "[scene]") {

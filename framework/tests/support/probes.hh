@@ -4,6 +4,7 @@
 #include <ostream>
 
 #include "vl/primitive.hh"
+#include "vl/registry.hh"
 #include "vl/rt_base_objects.hh"
 #include "vl/scene_reader.hh"
 
@@ -47,5 +48,14 @@ private:
         return i.hit() ? i : intersection::composite_only(this);
     }
 };
+
+/// The framework's pieces plus PROBE and BOUNDED, for reading test scenes.
+inline registry probe_types() {
+    registry r;
+    register_framework(r);
+    r.add("PROBE", [] { return std::make_unique<probe>(); });
+    r.add("BOUNDED", [] { return std::make_unique<bounded_probe_list>(); });
+    return r;
+}
 
 }  // namespace vl::test
