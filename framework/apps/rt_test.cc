@@ -8,6 +8,7 @@
 #include "../tests/support/temp_dir.hh"
 #include "all_pieces.hh"
 #include "heat_map.hh"
+#include "image_compare.hh"
 #include "vl/image_io.hh"
 #include "vl/render.hh"
 
@@ -152,4 +153,20 @@ TEST_CASE("render_to_vfb: picks the ray tracer by the .ray_trace extension", "[r
     CHECK(corner.b() == Approx(1));
     const auto other = dir.write("s.txt", "SPHERE { }");
     CHECK_THROWS_WITH(render_to_vfb(other, types, out), Catch::Contains("s.txt: cannot render a '.txt' file"));
+}
+
+TEST_CASE("image compare: identical images match, a changed one does not", "[rt][compare]") {
+    image a(20, 10, 3, sample_type::u8);
+    for (auto& v : a.samples<std::uint8_t>()) v = 100;
+    image b = a;
+    image_difference d = compare_images(a, b);
+    CHECK(d.same_size);
+    CHECK(d.max_abs == 0);
+    CHECK(renders_match(d));
+    for (int x = 0; x < 20; ++x) b.row<std::uint8_t>(3)[static_cast<std::size_t>(3 * x)] = 200;  // one red row
+    d = compare_images(a, b);
+    CHECK(d.max_abs == 100);
+    CHECK(d.fraction_over == Approx(0.1));
+    CHECK_FALSE(renders_match(d));
+    CHECK_FALSE(compare_images(a, image(10, 10, 3, sample_type::u8)).same_size);
 }

@@ -77,6 +77,7 @@ void register_framework(registry& r) {
     r.add("LIST", [] { return std::make_unique<object_list>(); });
     r.add_tracer("flat", [](const scene& s) { return std::make_unique<flat_tracer>(s); });
     r.add_tracer("normals", [](const scene& s) { return std::make_unique<normals_tracer>(s); });
+    r.add_tracer("sky", [](const scene& s) { return std::make_unique<sky_tracer>(s); });
 }
 
 }  // namespace vl

@@ -14,4 +14,14 @@ color normals_tracer::trace(const ray& r, int) const {
     return {(n.x + 1) / 2, (n.y + 1) / 2, (n.z + 1) / 2};
 }
 
+color sky_tracer::sky(const vector& d) {
+    const double up = d.y > 0 ? d.y : 0;
+    return (1 - up) * WHITE + up * color(0.5, 0.7, 1.0);
+}
+
+color sky_tracer::trace(const ray& r, int) const {
+    const intersection hit = scene_.root->intersect(r);
+    return hit.hit() ? hit.object->clr() : sky(r.direction());
+}
+
 }  // namespace vl

@@ -69,8 +69,8 @@ private:
     std::map<std::string, tracer_factory, std::less<>> tracers_;
 };
 
-/// Binds the framework's own pieces: the `LIST` type (vl::object_list) and the `flat`
-/// and `normals` tracers.
+/// Binds the framework's own pieces: the `LIST` type (vl::object_list) and the `flat`,
+/// `normals` and `sky` tracers.
 void register_framework(registry& r);
 
 }  // namespace vl

@@ -44,9 +44,9 @@ struct scene {
 
 /// The pixel sample patterns a scene may name (stage 01 implements them).
 inline constexpr std::string_view sampler_names[] = {"center", "grid", "jittered", "random"};
-/// The tracers a scene may name: `flat` and `normals` ship with the framework,
+/// The tracers a scene may name: `flat`, `normals` and `sky` ship with the framework,
 /// `whitted` is stage 04.
-inline constexpr std::string_view tracer_names[] = {"flat", "normals", "whitted"};
+inline constexpr std::string_view tracer_names[] = {"flat", "normals", "sky", "whitted"};
 /// The largest width or height a scene may ask for.
 inline constexpr int max_image_side = 16384;
 

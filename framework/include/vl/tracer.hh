@@ -42,4 +42,20 @@ private:
     const scene& scene_;
 };
 
+/// \brief The sky seen along each ray, white at the horizon to blue overhead, and each
+/// object in its own colour where a ray hits one. With no objects at all it shows that
+/// the camera works: which way is up, how wide the view is.
+class sky_tracer : public tracer {
+public:
+    /// Traces against `s` (kept by reference: it must outlive the tracer).
+    explicit sky_tracer(const scene& s) : scene_(s) {}
+    color trace(const ray& r, int depth) const override;
+    /// The sky's colour for a unit direction: a blend from white (down and level) to
+    /// light blue (straight up) by the direction's y.
+    static color sky(const vector& direction);
+
+private:
+    const scene& scene_;
+};
+
 }  // namespace vl
