@@ -24,13 +24,15 @@ std::string read_name(scene_reader& in, std::string_view what, std::span<const s
     return name;
 }
 
-void read_statements(scene_reader& in, scene& s) {
+/// Reads every statement; returns how many there were.
+int read_statements(scene_reader& in, scene& s) {
+    int statements = 0;
     std::map<std::string, source_location> seen;  // settings given once only
     auto once = [&](const token& key) {
         const auto [it, fresh] = seen.emplace(key.text, key.where);
         if (!fresh) in.fail(key.where, key.text + " is given twice (first at " + it->second.str() + ")");
     };
-    while (!in.at_end()) {
+    for (; !in.at_end(); ++statements) {
         const token key = in.peek();
         if (key.type != token::kind::word) in.fail_expected("a setting (camera, light, size, ...) or an object type");
         // Upper-case words are object types; read_object() explains a malformed one.
@@ -86,13 +88,15 @@ void read_statements(scene_reader& in, scene& s) {
                                    "background, include \"FILE\", and objects whose type names are upper case (SPHERE)");
         }
     }
+    return statements;
 }
 
+// A scene without objects is fine (the sky tracer shows what the camera sees); a file
+// without any statement is almost certainly the wrong file.
 scene finish(scene_reader& in, scene s) {
-    read_statements(in, s);
-    if (s.root->num_children() == 0) {
+    if (read_statements(in, s) == 0) {
         const token end = in.peek();
-        in.fail(end.where, "the scene has no objects: add one, such as SPHERE { center 0 0 0 radius 1 }");
+        in.fail(end.where, "the scene is empty: add settings and objects, such as SPHERE { center 0 0 0 radius 1 }");
     }
     return s;
 }

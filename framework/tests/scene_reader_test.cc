@@ -147,8 +147,8 @@ TEST_CASE("scene_reader: binary garbage is refused with a message, not parsed", 
 TEST_CASE("scene_reader: every malformed scene gets FILE:LINE:COL and what was expected", "[scene][reader][errors]") {
     const std::pair<const char*, const char*> cases[] = {
         // empty or truncated
-        {"", "bad.ray_trace:1:1: the scene has no objects"},
-        {"# only a comment\n", "bad.ray_trace:2:1: the scene has no objects"},
+        {"", "bad.ray_trace:1:1: the scene is empty"},
+        {"# only a comment\n", "bad.ray_trace:2:1: the scene is empty"},
         {"PROBE { t 1", "bad.ray_trace:1:12: expected '}' to close PROBE, found the end of the file"},
         {"PROBE {", "bad.ray_trace:1:8: expected '}' to close PROBE"},
         {"PROBE", "bad.ray_trace:1:6: expected '{' after PROBE, found the end of the file"},

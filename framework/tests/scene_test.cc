@@ -106,3 +106,10 @@ TEST_CASE("normals tracer: the normal mapped from [-1, 1] to [0, 1]", "[scene][t
     const scene s = parse_scene("PROBE { t 2 }", "n", types);  // the probe's normal is +z
     CHECK(normals_tracer(s).trace(ray(point(0, 0, 0), vector(0, 0, 1)), 0) == color(0.5, 0.5, 1));
 }
+
+TEST_CASE("scene: settings without objects are a scene (the sky tracer shows the camera)", "[scene]") {
+    const registry types = test_types();
+    const scene s = parse_scene("tracer sky\nsize 16 8\n", "sky.ray_trace", types);
+    CHECK(s.root->num_children() == 0);
+    CHECK(s.tracer == "sky");
+}

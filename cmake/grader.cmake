@@ -1,0 +1,48 @@
+# The grader's half of the build (included by grader/CMakeLists.txt).
+#
+# The main build compiles, once, everything a submission's build can reuse: each stage's
+# reference as its own library, each stage's hidden tests and the renderer as object
+# files, the trusted test programs (hidden tests + reference) and the reference renders
+# of the hidden scenes. It then writes two files next to the grader:
+#   prebuilt.cmake  imported targets for grader/submission/CMakeLists.txt, the small
+#                   project that compiles only a submitted stage and links it with these;
+#   grader.toml     where everything is, for the grader program.
+# Stages are found, not listed: a folder reference/NN-name with .cc files whose stage the
+# top level declared with vl_stage(NN name) is gradable; grader/hidden/NN-name adds its
+# hidden tests, scenes and rubric.
+
+# vl_grader_find_stages(OUT): "NN-name" for every gradable stage, in order.
+function(vl_grader_find_stages out)
+  file(GLOB dirs LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/reference/[0-9][0-9]-*)
+  list(SORT dirs)
+  set(stages)
+  foreach(dir IN LISTS dirs)
+    get_filename_component(stage ${dir} NAME)
+    string(SUBSTRING ${stage} 0 2 number)
+    file(GLOB sources ${dir}/*.cc)
+    if(IS_DIRECTORY ${dir} AND sources AND TARGET vl_stage_${number})
+      list(APPEND stages ${stage})
+    endif()
+  endforeach()
+  set(${out} ${stages} PARENT_SCOPE)
+endfunction()
+
+# vl_grader_reference_library(NN-name): vl_grader_reference_NN, the stage's reference,
+# whatever VL_PIECES this build uses for vl_stage_NN.
+function(vl_grader_reference_library stage)
+  string(SUBSTRING ${stage} 0 2 number)
+  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
+  add_library(vl_grader_reference_${number} STATIC ${sources})
+  target_include_directories(vl_grader_reference_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
+  target_link_libraries(vl_grader_reference_${number} PUBLIC vl_framework PRIVATE vl_warnings)
+endfunction()
+
+# Renders `scene` with `renderer` into `png` at build time (the reference renders).
+function(vl_grader_reference_render renderer scene png)
+  add_custom_command(OUTPUT ${png}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/reference-renders
+    COMMAND $<TARGET_FILE:${renderer}> ${scene} -o ${png} --threads 1
+    DEPENDS ${renderer} ${scene}
+    COMMENT "Rendering the reference image of ${scene}"
+    VERBATIM)
+endfunction()

@@ -1,0 +1,177 @@
+#include "catch_runner.hh"
+
+#include <pugixml.hpp>
+
+#include "install.hh"
+
+namespace vl::grader {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> split_tags(const std::string& tags) {
+    std::vector<std::string> out;
+    std::size_t at = 0;
+    while ((at = tags.find('[', at)) != std::string::npos) {
+        const std::size_t end = tags.find(']', at);
+        if (end == std::string::npos) break;
+        out.push_back(tags.substr(at + 1, end - at - 1));
+        at = end + 1;
+    }
+    return out;
+}
+
+std::string trim(std::string s) {
+    const auto first = s.find_first_not_of(" \t\n\r");
+    if (first == std::string::npos) return {};
+    const auto last = s.find_last_not_of(" \t\n\r");
+    return s.substr(first, last - first + 1);
+}
+
+std::string where(const pugi::xml_node& n) {
+    const std::string file = fs::path(n.attribute("filename").as_string()).filename().string();
+    return file.empty() ? std::string() : file + ":" + n.attribute("line").as_string() + ": ";
+}
+
+/// Every failure under `node` (sections nest), with the INFO messages in scope.
+void collect_failures(const pugi::xml_node& node, std::string& out, int& count) {
+    std::string infos;
+    for (const pugi::xml_node& c : node.children()) {
+        const std::string kind = c.name();
+        if (kind == "Info") {
+            infos += "  with: " + trim(c.text().as_string()) + "\n";
+        } else if (kind == "Expression" && !c.attribute("success").as_bool(true)) {
+            if (++count > 6) continue;
+            out += where(c) + c.attribute("type").as_string() + "( " + trim(c.child("Original").text().as_string()) +
+                   " )\n  with values: " + trim(c.child("Expanded").text().as_string()) + "\n" + infos;
+            for (const pugi::xml_node& e : c.children("Exception"))
+                out += "  threw: " + trim(e.text().as_string()) + "\n";
+        } else if (kind == "Exception") {
+            if (++count > 6) continue;
+            out += where(c) + "threw an exception: " + trim(c.text().as_string()) + "\n" + infos;
+        } else if (kind == "FatalErrorCondition") {
+            if (++count > 6) continue;
+            out += where(c) + "crashed: " + trim(c.text().as_string()) + "\n" + infos;
+        } else if (kind == "Failure") {
+            if (++count > 6) continue;
+            out += where(c) + "failed: " + trim(c.text().as_string()) + "\n" + infos;
+        } else if (kind == "Section") {
+            collect_failures(c, out, count);
+        }
+    }
+}
+
+}  // namespace
+
+const char* to_string(test_outcome::status s) {
+    switch (s) {
+        case test_outcome::status::passed: return "passed";
+        case test_outcome::status::failed: return "failed";
+        case test_outcome::status::crashed: return "crashed";
+        case test_outcome::status::timed_out: return "timed out";
+        case test_outcome::status::not_run: break;
+    }
+    return "not run";
+}
+
+std::string exact_test_spec(const std::string& name) {
+    std::string spec;
+    for (const char c : name) {
+        if (c == '\\' || c == ',' || c == '[' || c == ']' || c == '"' || c == '~' || c == '*') spec += '\\';
+        spec += c;
+    }
+    return spec;
+}
+
+std::vector<test_case_info> list_trusted_tests(const fs::path& program, const fs::path& work,
+                                               const sandbox_capabilities& caps) {
+    fs::create_directories(work);
+    const fs::path xml = work / "trusted.xml";
+    run_request rq;
+    rq.argv = {program.string(), "-r", "xml", "-o", xml.string()};
+    rq.cwd = work;
+    rq.output = work / "trusted.log";
+    rq.environment = child_environment(work);
+    rq.limits.wall_seconds = 300;
+    rq.sandboxed = false;
+    const run_result r = run(rq, caps);
+    pugi::xml_document doc;
+    if (!r.started || r.timed_out || !doc.load_file(xml.c_str()))
+        throw grader_error("the trusted hidden tests " + program.string() + " did not report (" + r.describe(300) +
+                           "); rebuild with tools/setup");
+    std::vector<test_case_info> tests;
+    std::string broken;
+    for (const pugi::xpath_node& x : doc.select_nodes("//TestCase")) {
+        const pugi::xml_node t = x.node();
+        tests.push_back({t.attribute("name").as_string(), split_tags(t.attribute("tags").as_string())});
+        if (!t.child("OverallResult").attribute("success").as_bool(false)) {
+            std::string message;
+            int count = 0;
+            collect_failures(t, message, count);
+            broken += "  " + tests.back().name + "\n" + message;
+        }
+    }
+    if (!broken.empty())
+        throw grader_error("hidden tests fail with the reference, so they cannot grade anyone:\n" + broken +
+                           "fix the test or the reference first");
+    if (tests.empty()) throw grader_error(program.string() + " holds no test cases");
+    return tests;
+}
+
+test_outcome run_test_case(const fs::path& program, const std::string& name, const fs::path& work,
+                           const run_limits& limits, const sandbox_capabilities& caps) {
+    fs::create_directories(work);
+    give_to_sandbox(work, caps);
+    const fs::path xml = work / "report.xml";
+    run_request rq;
+    rq.argv = {program.string(), exact_test_spec(name), "-r", "xml", "-o", xml.string()};
+    rq.cwd = work;
+    rq.output = work / "output.txt";
+    rq.environment = child_environment(work);
+    rq.limits = limits;
+    const run_result r = run(rq, caps);
+
+    test_outcome o;
+    o.seconds = r.seconds;
+    if (!r.started) {
+        o.result = test_outcome::status::crashed;
+        o.message = "the test program " + r.describe(limits.wall_seconds);
+        return o;
+    }
+    if (r.timed_out) {
+        o.result = test_outcome::status::timed_out;
+        o.message = "the test " + r.describe(limits.wall_seconds);
+        return o;
+    }
+    // Only the report counts, and only a report of exactly this test case.
+    pugi::xml_document doc;
+    pugi::xml_node test;
+    int reported = 0;
+    if (doc.load_file(xml.c_str())) {
+        for (const pugi::xpath_node& x : doc.select_nodes("//TestCase")) {
+            ++reported;
+            if (x.node().attribute("name").as_string() == name) test = x.node();
+        }
+    }
+    std::string message;
+    int count = 0;
+    if (test) collect_failures(test, message, count);
+    if (count > 6) message += "[... " + std::to_string(count - 6) + " more failures]\n";
+    const bool success = test && reported == 1 && test.child("OverallResult").attribute("success").as_bool(false);
+    if (success && r.succeeded()) {
+        o.result = test_outcome::status::passed;
+    } else if (r.signal != 0 || !test || test.child("FatalErrorCondition") ||
+               test.select_node(".//FatalErrorCondition")) {
+        o.result = test_outcome::status::crashed;
+        o.message = message + "the test program was " + r.describe(limits.wall_seconds) +
+                    (test ? "" : " before it reported this test");
+        if (r.exit_code == 0 && !test) o.message = "the test program ended without reporting this test";
+    } else {
+        o.result = test_outcome::status::failed;
+        o.message = message.empty() ? "the test program ended with " + r.describe(limits.wall_seconds) : message;
+    }
+    return o;
+}
+
+}  // namespace vl::grader

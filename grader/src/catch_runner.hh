@@ -1,0 +1,43 @@
+#pragma once
+/// \file
+/// \brief Running Catch2 test programs one test case per process, and reading only what
+/// Catch2's XML reporter wrote to a file the grader named (never the program's output).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sandbox.hh"
+
+namespace vl::grader {
+
+/// \brief A hidden test case, as the trusted build (hidden tests + reference) lists it.
+struct test_case_info {
+    std::string name;
+    std::vector<std::string> tags;  ///< without brackets: "02", "sphere", "hits"
+};
+
+/// \brief How one test case went.
+struct test_outcome {
+    enum class status { passed, failed, crashed, timed_out, not_run } result = status::not_run;
+    std::string message;  ///< what failed, where, with which values
+    double seconds = 0;
+};
+
+/// "passed", "failed", "crashed", "timed out", "not run".
+const char* to_string(test_outcome::status s);
+
+/// Runs the trusted program once and returns its test cases. Throws grader_error when it
+/// cannot run, or when a hidden test fails with the reference (the test or the reference
+/// is wrong, and no student should lose points for it).
+std::vector<test_case_info> list_trusted_tests(const std::filesystem::path& program, const std::filesystem::path& work,
+                                               const sandbox_capabilities& caps);
+
+/// Runs the test case `name` of `program` alone, in `work` (created, one per test).
+test_outcome run_test_case(const std::filesystem::path& program, const std::string& name,
+                           const std::filesystem::path& work, const run_limits& limits,
+                           const sandbox_capabilities& caps);
+
+/// A Catch2 test spec that matches exactly `name` (its special characters escaped).
+std::string exact_test_spec(const std::string& name);
+
+}  // namespace vl::grader

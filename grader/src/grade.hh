@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// \brief Grading one submission of one assignment: the pipeline of grader/README.md,
+/// from a submission to a graded_submission that results.json, report.html and the
+/// terminal summary are written from.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "install.hh"
+
+namespace vl::grader {
+
+/// \brief One line of the grade: the build, a hidden test or a hidden scene.
+struct graded_item {
+    enum class kind { build, test, scene } what = kind::test;
+    std::string name, category, visibility;
+    std::vector<std::string> tags;
+    double score = 0, max_score = 0;
+    std::string result = "not run";  ///< passed, failed, crashed, timed out, not run
+    std::string message;
+    double seconds = 0;
+    std::filesystem::path image, reference_image, difference_image;  ///< scenes only
+    bool passed() const { return result == "passed"; }
+};
+
+/// \brief A category's total.
+struct category_total {
+    std::string name, title;
+    double score = 0, max_score = 0;
+    int passed = 0, items = 0;
+};
+
+/// \brief Everything known about one graded submission.
+struct graded_submission {
+    std::string assignment, title, submission, origin, sandbox, started_at;
+    std::vector<std::string> notes;
+    bool built = false;
+    std::vector<graded_item> items;  ///< the build first, then by category
+    std::vector<category_total> categories;
+    double score = 0, max_score = 0, seconds = 0;
+};
+
+/// \brief Options of `grade`.
+struct grade_options {
+    std::filesystem::path out;  ///< results.json, report.html and work/ go here
+};
+
+/// Grades `submission` for `stage`. Problems of the submission become failed items;
+/// problems of the grader throw grader_error.
+graded_submission grade(const installation& in, const stage_info& stage, const std::filesystem::path& submission,
+                        const grade_options& options);
+
+}  // namespace vl::grader

@@ -1,0 +1,46 @@
+#pragma once
+/// \file
+/// \brief Where the grader's parts are: read from `grader.toml`, which the build writes
+/// next to the grader program (grader/CMakeLists.txt).
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace vl::grader {
+
+/// \brief A problem that stops the grader itself (not a problem of a submission): the
+/// message says what is wrong and what to do; the program exits non-zero.
+class grader_error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// \brief One gradable stage of this build.
+struct stage_info {
+    std::string name;                    ///< "02-sphere"
+    std::string number;                  ///< "02"
+    std::filesystem::path trusted_tests; ///< hidden tests linked with the reference (empty: none)
+};
+
+/// \brief The grader's installation: the source tree, the main build and its parts.
+struct installation {
+    std::filesystem::path source_dir, build_dir, grader_build_dir;
+    std::filesystem::path cmake, make_program, prebuilt, reference_renderer, reference_renders;
+    std::string generator, cxx_compiler, compiler_launcher, build_type;
+    bool sanitized = false;             ///< built with AddressSanitizer (no address-space limit then)
+    std::map<std::string, stage_info> stages;
+
+    /// grader/hidden/NN-name.
+    std::filesystem::path hidden_dir(const stage_info& s) const { return source_dir / "grader" / "hidden" / s.name; }
+    /// assignments/NN-name: the contract header(s) and the stubs.
+    std::filesystem::path assignment_dir(const stage_info& s) const { return source_dir / "assignments" / s.name; }
+
+    /// The stage an instructor means by `what`: "02", "02-sphere" or "sphere".
+    const stage_info& find_stage(const std::string& what) const;
+};
+
+/// Reads grader.toml beside the running program.
+installation load_installation();
+
+}  // namespace vl::grader

@@ -1,0 +1,267 @@
+// The grader's command line: `grader/run COMMAND ...` (see grader/README.md). Each
+// command is one entry of the table below, so new ones (imgdiff, roster, gradescope)
+// slot in beside the others.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+#include "export_kit.hh"
+#include "grade.hh"
+#include "install.hh"
+#include "report_html.hh"
+#include "results_json.hh"
+#include "terminal_summary.hh"
+
+namespace {
+
+namespace fs = std::filesystem;
+using vl::grader::grader_error;
+using vl::grader::installation;
+
+/// A mistake on the command line: printed with the command's usage.
+struct usage_error {
+    std::string message;
+};
+
+using arguments = std::vector<std::string>;
+
+/// \brief One subcommand.
+struct command {
+    std::string name, synopsis, summary;
+    std::function<int(const installation&, const arguments&)> run;
+};
+
+/// Takes `--flag VALUE` out of `args`; empty when absent.
+std::string take_option(arguments& args, const std::string& flag) {
+    for (std::size_t k = 0; k < args.size(); ++k) {
+        if (args[k] == flag) {
+            if (k + 1 >= args.size()) throw usage_error{flag + " needs a value"};
+            std::string v = args[k + 1];
+            args.erase(args.begin() + static_cast<long>(k), args.begin() + static_cast<long>(k) + 2);
+            return v;
+        }
+        if (args[k].starts_with(flag + "=")) {
+            std::string v = args[k].substr(flag.size() + 1);
+            args.erase(args.begin() + static_cast<long>(k));
+            return v;
+        }
+    }
+    return {};
+}
+
+void expect_count(const arguments& args, std::size_t n) {
+    for (const std::string& a : args)
+        if (a.starts_with("--")) throw usage_error{"unknown option '" + a + "'"};
+    if (args.size() != n) throw usage_error{"expected " + std::to_string(n) + " argument(s), got " + std::to_string(args.size())};
+}
+
+/// Grades and writes results.json and report.html into `out`.
+vl::grader::graded_submission grade_into(const installation& in, const std::string& assignment,
+                                         const fs::path& submission, const fs::path& out) {
+    const vl::grader::stage_info& stage = in.find_stage(assignment);
+    if (!fs::exists(submission)) throw grader_error(submission.string() + ": no such file or folder");
+    fs::create_directories(out);
+    const vl::grader::graded_submission g = vl::grader::grade(in, stage, submission, {fs::absolute(out)});
+    vl::grader::write_results_json(g, out / "results.json");
+    vl::grader::write_report_html(g, out / "report.html");
+    return g;
+}
+
+int grade_command(const installation& in, arguments args) {
+    std::string out = take_option(args, "--out");
+    expect_count(args, 2);
+    if (out.empty()) out = "grader-out/" + in.find_stage(args[0]).name + "-" + fs::path(args[1]).filename().string();
+    const auto g = grade_into(in, args[0], args[1], out);
+    vl::grader::print_summary(std::cout, g, out, vl::grader::stdout_wants_colour());
+    return 0;
+}
+
+/// \brief A calibration case: grader/tests/submissions/NN-name/CASE/expected.toml.
+struct calibration_case {
+    std::string stage, name, description;
+    fs::path submission, expected;
+};
+
+calibration_case read_case(const installation& in, const fs::path& dir) {
+    calibration_case c;
+    c.expected = dir / "expected.toml";
+    c.stage = fs::absolute(dir).lexically_normal().parent_path().filename().string();
+    c.name = fs::absolute(dir).lexically_normal().filename().string();
+    if (c.stage.empty() || c.name.empty()) {
+        const fs::path clean = fs::absolute(dir).lexically_normal().parent_path();
+        c.stage = clean.parent_path().filename().string();
+        c.name = clean.filename().string();
+    }
+    toml::table t;
+    try {
+        t = toml::parse_file(c.expected.string());
+    } catch (const toml::parse_error& e) {
+        throw grader_error(c.expected.string() + ": " + std::string(e.description()));
+    }
+    c.description = t["description"].value_or(std::string());
+    const std::string from = t["submission"].value_or(std::string());
+    c.submission = from.empty() ? dir : in.source_dir / from;
+    return c;
+}
+
+std::vector<calibration_case> all_cases(const installation& in) {
+    std::vector<calibration_case> cases;
+    for (const auto& [name, stage] : in.stages) {
+        const fs::path dir = in.source_dir / "grader" / "tests" / "submissions" / name;
+        if (!fs::exists(dir)) continue;
+        std::vector<fs::path> dirs;
+        for (const auto& e : fs::directory_iterator(dir))
+            if (fs::exists(e.path() / "expected.toml")) dirs.push_back(e.path());
+        std::sort(dirs.begin(), dirs.end());
+        for (const fs::path& d : dirs) cases.push_back(read_case(in, d));
+    }
+    return cases;
+}
+
+/// Compares a grade with expected.toml: the score's range in percent, which categories
+/// must lose points (every other one must keep full marks), whether it built.
+std::vector<std::string> check_expectations(const fs::path& results, const fs::path& expected) {
+    std::ifstream in(results);
+    const nlohmann::json r = nlohmann::json::parse(in);
+    const toml::table t = toml::parse_file(expected.string());
+    std::vector<std::string> problems;
+    const double score = r["score"], max = r["extra_data"]["max_score"];
+    const double percent = max > 0 ? 100 * score / max : 0;
+    if (const toml::array* range = t["score_percent"].as_array()) {
+        const double lo = range->get(0)->value<double>().value_or(0), hi = range->get(1)->value<double>().value_or(100);
+        if (percent < lo - 1e-9 || percent > hi + 1e-9)
+            problems.push_back("score " + std::to_string(percent) + "% is outside [" + std::to_string(lo) + ", " +
+                               std::to_string(hi) + "]");
+    }
+    if (const auto built = t["built"].value<bool>(); built && r["extra_data"]["built"].get<bool>() != *built)
+        problems.push_back(*built ? "it did not build" : "it built, but should not have");
+    if (const toml::array* lose = t["lose_only"].as_array()) {
+        std::vector<std::string> losing;
+        for (const toml::node& n : *lose) losing.push_back(*n.value<std::string>());
+        for (const auto& c : r["extra_data"]["categories"]) {
+            const std::string name = c["name"];
+            const bool lost = c["score"].get<double>() < c["max_score"].get<double>() - 1e-9;
+            const bool should = std::find(losing.begin(), losing.end(), name) != losing.end();
+            if (lost && !should) problems.push_back("lost points in category '" + name + "', where it should not");
+            if (!lost && should) problems.push_back("kept full marks in category '" + name + "', where it should lose");
+        }
+    }
+    return problems;
+}
+
+int calibrate_command(const installation& in, arguments args) {
+    std::string out = take_option(args, "--out");
+    expect_count(args, 1);
+    const calibration_case c = read_case(in, args[0]);
+    if (out.empty()) out = (in.grader_build_dir / "calibration" / c.stage / c.name).string();
+    const auto g = grade_into(in, c.stage, c.submission, out);
+    vl::grader::print_summary(std::cout, g, out, false);
+    const auto problems = check_expectations(fs::path(out) / "results.json", c.expected);
+    for (const std::string& p : problems) std::cout << "CALIBRATION: " << c.stage << "/" << c.name << ": " << p << "\n";
+    if (problems.empty()) std::cout << "calibration: " << c.stage << "/" << c.name << " as expected\n";
+    return problems.empty() ? 0 : 1;
+}
+
+int demo_command(const installation& in, const arguments& args) {
+    expect_count(args, 0);
+    const fs::path root = in.grader_build_dir / "demo";
+    const bool colour = vl::grader::stdout_wants_colour();
+    struct line {
+        std::string what;
+        double score, max;
+        fs::path report;
+    };
+    std::vector<line> lines;
+    for (const calibration_case& c : all_cases(in)) {
+        std::cout << "grading " << c.stage << " " << c.name << (c.description.empty() ? "" : ": " + c.description)
+                  << "\n" << std::flush;
+        const fs::path out = root / c.stage / c.name;
+        const auto g = grade_into(in, c.stage, c.submission, out);
+        lines.push_back({c.stage + " " + c.name, g.score, g.max_score, out / "report.html"});
+    }
+    std::cout << "\n";
+    for (const line& l : lines) {
+        std::printf("%s%-34s %6.1f / %5.1f%s  %s\n", colour ? "\033[1m" : "", l.what.c_str(), l.score, l.max,
+                    colour ? "\033[0m" : "", l.report.c_str());
+    }
+    std::cout << "\nOpen a report in a browser; each folder also holds its results.json.\n";
+    return 0;
+}
+
+int export_kit_command(const installation& in, const arguments& args) {
+    expect_count(args, 1);
+    fs::path dir = fs::absolute(args[0]).lexically_normal();
+    if (dir.filename().empty()) dir = dir.parent_path();
+    vl::grader::export_kit(in, dir);
+    std::cout << "student kit: " << dir.string() << "\n             " << dir.string()
+              << ".tar.gz\nchecked: no line of reference/ and no hidden test name is in it\n"
+                 "a student builds it with: cmake --preset default -DVL_PIECES=student\n";
+    return 0;
+}
+
+int list_command(const installation& in, const arguments& args) {
+    expect_count(args, 0);
+    for (const auto& [name, stage] : in.stages)
+        std::cout << name << (stage.trusted_tests.empty() ? "  (no hidden tests yet)" : "") << "\n";
+    return 0;
+}
+
+const std::vector<command>& commands() {
+    static const std::vector<command> table = {
+        {"demo", "demo", "grade the bundled sample submissions and print where their reports are", demo_command},
+        {"grade", "grade ASSIGNMENT SUBMISSION [--out DIR]",
+         "grade one submission (a folder, a student kit, or a .zip/.tar.gz of one); writes DIR/results.json "
+         "and DIR/report.html",
+         grade_command},
+        {"export-kit", "export-kit DIR", "write the student kit to DIR and DIR.tar.gz (no reference, no hidden tests)",
+         export_kit_command},
+        {"list", "list", "the assignments this build can grade", list_command},
+        {"calibrate", "calibrate CASE_DIR [--out DIR]",
+         "grade one calibration case (grader/tests/submissions/NN-name/CASE) and check it against its expected.toml",
+         calibrate_command},
+    };
+    return table;
+}
+
+void print_usage(std::FILE* to) {
+    std::fprintf(to, "usage: grader/run COMMAND [ARGUMENTS]\n\ncommands:\n");
+    for (const command& c : commands()) std::fprintf(to, "  %-40s %s\n", c.synopsis.c_str(), c.summary.c_str());
+    std::fprintf(to, "\nASSIGNMENT is a number (02), a full name (02-sphere) or a name (sphere).\n"
+                     "grade exits 0 whenever it wrote results, whatever the score.\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const arguments all(argv + 1, argv + argc);
+    if (all.empty() || all[0] == "-h" || all[0] == "--help" || all[0] == "help") {
+        print_usage(all.empty() ? stderr : stdout);
+        return all.empty() ? 2 : 0;
+    }
+    const auto c = std::find_if(commands().begin(), commands().end(), [&](const command& x) { return x.name == all[0]; });
+    if (c == commands().end()) {
+        std::fprintf(stderr, "grader: unknown command '%s'\n\n", all[0].c_str());
+        print_usage(stderr);
+        return 2;
+    }
+    try {
+        const installation in = vl::grader::load_installation();
+        return c->run(in, arguments(all.begin() + 1, all.end()));
+    } catch (const usage_error& e) {
+        std::fprintf(stderr, "grader %s: %s\nusage: grader/run %s\n", c->name.c_str(), e.message.c_str(),
+                     c->synopsis.c_str());
+        return 2;
+    } catch (const grader_error& e) {
+        std::fprintf(stderr, "grader %s: %s\n", c->name.c_str(), e.what());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "grader %s: %s\n", c->name.c_str(), e.what());
+    }
+    return 1;
+}

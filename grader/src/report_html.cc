@@ -1,0 +1,152 @@
+#include "report_html.hh"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace vl::grader {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string escape(const std::string& s) {
+    std::string out;
+    for (const char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string base64(const std::string& bytes) {
+    static constexpr char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    std::size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned v = (unsigned char)bytes[i] << 16 | (unsigned char)bytes[i + 1] << 8 | (unsigned char)bytes[i + 2];
+        out += {digits[v >> 18], digits[(v >> 12) & 63], digits[(v >> 6) & 63], digits[v & 63]};
+    }
+    if (i + 1 == bytes.size()) {
+        const unsigned v = (unsigned char)bytes[i] << 16;
+        out += {digits[v >> 18], digits[(v >> 12) & 63], '=', '='};
+    } else if (i + 2 == bytes.size()) {
+        const unsigned v = (unsigned char)bytes[i] << 16 | (unsigned char)bytes[i + 1] << 8;
+        out += {digits[v >> 18], digits[(v >> 12) & 63], digits[(v >> 6) & 63], '='};
+    }
+    return out;
+}
+
+std::string image_tag(const fs::path& png, const std::string& caption) {
+    std::string body;
+    if (!png.empty() && fs::exists(png)) {
+        std::ifstream in(png, std::ios::binary);
+        const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        body = "<img src=\"data:image/png;base64," + base64(bytes) + "\" alt=\"" + escape(caption) + "\">";
+    } else {
+        body = "<div class=\"noimage\">no image</div>";
+    }
+    return "<figure>" + body + "<figcaption>" + escape(caption) + "</figcaption></figure>";
+}
+
+std::string points(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", std::round(x * 100) / 100);
+    return buf;
+}
+
+std::string percent(double score, double max) { return max > 0 ? std::to_string(std::lround(100 * score / max)) : "-"; }
+
+std::string badge(const std::string& result) {
+    std::string cls = result == "passed" ? "ok" : result == "not run" ? "skip" : "bad";
+    return "<span class=\"badge " + cls + "\">" + escape(result) + "</span>";
+}
+
+constexpr const char* style = R"(
+body { font: 15px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 70em; padding: 0 1em; color: #222; }
+h1 { font-size: 1.5em; margin-bottom: .2em; } h2 { font-size: 1.2em; margin-top: 1.6em; border-bottom: 1px solid #ddd; }
+.meta { color: #555; } .score { font-size: 2.2em; font-weight: 600; }
+table { border-collapse: collapse; width: 100%; } td, th { padding: .3em .6em; text-align: left; vertical-align: top; }
+tr + tr td { border-top: 1px solid #eee; } td.num { text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }
+.bar { background: #eee; width: 12em; height: .8em; border-radius: .4em; overflow: hidden; }
+.bar span { display: block; height: 100%; background: #3a8f47; }
+.badge { display: inline-block; min-width: 5.5em; text-align: center; border-radius: .3em; padding: 0 .4em; font-size: .85em; }
+.ok { background: #dff3e1; color: #1d5e27; } .bad { background: #fbe0dd; color: #8c1d12; } .skip { background: #eee; color: #555; }
+pre { background: #f6f6f6; padding: .6em; overflow-x: auto; font-size: .85em; white-space: pre-wrap; margin: .3em 0; }
+.figures { display: flex; gap: 1em; flex-wrap: wrap; margin: .4em 0 1em; }
+figure { margin: 0; } figure img { image-rendering: pixelated; width: 216px; border: 1px solid #ccc; display: block; }
+figcaption { font-size: .85em; color: #555; text-align: center; }
+.noimage { width: 216px; height: 162px; display: flex; align-items: center; justify-content: center; background: #f2f2f2; color: #999; }
+.notes li { color: #7a4b00; }
+)";
+
+}  // namespace
+
+std::string report_html(const graded_submission& g) {
+    std::ostringstream h;
+    h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" << escape(g.assignment)
+      << ": " << points(g.score) << " / " << points(g.max_score) << "</title>\n<style>" << style
+      << "</style></head><body>\n";
+    h << "<h1>" << escape(g.title) << "</h1>\n<p class=\"meta\">" << escape(g.submission);
+    if (!g.origin.empty()) h << " (" << escape(g.origin) << ")";
+    h << "<br>graded " << escape(g.started_at) << " in " << points(g.seconds) << " s</p>\n";
+    h << "<p class=\"score\">" << points(g.score) << " / " << points(g.max_score) << " <small>("
+      << percent(g.score, g.max_score) << "%)</small></p>\n";
+    if (!g.notes.empty()) {
+        h << "<ul class=\"notes\">";
+        for (const std::string& n : g.notes) h << "<li>" << escape(n) << "</li>";
+        h << "</ul>\n";
+    }
+
+    h << "<h2>By category</h2>\n<table><tr><th>category</th><th></th><th class=\"num\">points</th><th "
+         "class=\"num\">passed</th></tr>\n";
+    for (const category_total& c : g.categories) {
+        const double fill = c.max_score > 0 ? 100 * c.score / c.max_score : 100;
+        h << "<tr><td>" << escape(c.title) << "</td><td><div class=\"bar\"><span style=\"width:" << fill
+          << "%\"></span></div></td><td class=\"num\">" << points(c.score) << " / " << points(c.max_score)
+          << "</td><td class=\"num\">" << c.passed << " of " << c.items << "</td></tr>\n";
+    }
+    h << "</table>\n";
+
+    const graded_item& build = g.items.front();
+    h << "<h2>Build " << badge(build.result) << "</h2>\n";
+    if (!build.passed()) h << "<p>The first errors:</p><pre>" << escape(build.message) << "</pre>\n";
+    else h << "<p>Built in " << points(build.seconds) << " s, with the reference for every other stage.</p>\n";
+
+    for (const category_total& c : g.categories) {
+        h << "<h2>" << escape(c.title) << " <small>" << points(c.score) << " / " << points(c.max_score)
+          << "</small></h2>\n<table>\n";
+        for (const graded_item& i : g.items) {
+            if (i.category != c.name) continue;
+            h << "<tr><td>" << badge(i.result) << "</td><td>" << escape(i.name);
+            if (!i.passed() && !i.message.empty() && g.built) h << "<pre>" << escape(i.message) << "</pre>";
+            if (i.what == graded_item::kind::scene && g.built) {
+                if (i.passed()) h << "<br><small>" << escape(i.message) << "</small>";
+                h << "<div class=\"figures\">" << image_tag(i.image, "this submission")
+                  << image_tag(i.reference_image, "reference") << image_tag(i.difference_image, "difference (4x)")
+                  << "</div>";
+            }
+            h << "</td><td class=\"num\">" << points(i.score) << " / " << points(i.max_score) << "</td></tr>\n";
+        }
+        h << "</table>\n";
+    }
+    h << "<h2>How this was graded</h2>\n<p class=\"meta\">Hidden tests ran one per process; only Catch2's "
+         "report of each test counts, never what the program printed. Sandbox: "
+      << escape(g.sandbox) << ".</p>\n</body></html>\n";
+    return h.str();
+}
+
+void write_report_html(const graded_submission& g, const fs::path& file) {
+    std::ofstream out(file);
+    out << report_html(g);
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+}  // namespace vl::grader

@@ -1,0 +1,77 @@
+#include "results_json.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+namespace vl::grader {
+
+namespace {
+
+/// Scores are shown with at most 4 decimals (a third of a point stays 0.3333).
+double tidy(double x) { return std::round(x * 1e4) / 1e4; }
+
+std::string summary_text(const graded_submission& g) {
+    std::string s = g.title + ": " + std::to_string(static_cast<int>(std::lround(g.score))) + " of " +
+                    std::to_string(static_cast<int>(std::lround(g.max_score))) + " points.\n";
+    if (!g.built) s += "Your code did not build: see the test \"builds\" for the compiler's first errors.\n";
+    for (const category_total& c : g.categories)
+        s += "  " + c.title + ": " + std::to_string(c.passed) + " of " + std::to_string(c.items) + " passed\n";
+    for (const std::string& n : g.notes) s += "Note: " + n + "\n";
+    return s;
+}
+
+}  // namespace
+
+std::string results_json(const graded_submission& g) {
+    using nlohmann::json;
+    json tests = json::array();
+    std::map<std::string, int> number_in_category;
+    std::map<std::string, int> category_number;
+    for (std::size_t k = 0; k < g.categories.size(); ++k) category_number[g.categories[k].name] = static_cast<int>(k) + 1;
+    for (const graded_item& i : g.items) {
+        json t;
+        t["name"] = i.name;
+        t["number"] = i.what == graded_item::kind::build
+                          ? std::string("0")
+                          : std::to_string(category_number[i.category]) + "." +
+                                std::to_string(++number_in_category[i.category]);
+        t["score"] = tidy(i.score);
+        t["max_score"] = tidy(i.max_score);
+        t["status"] = i.passed() ? "passed" : "failed";
+        json tags = json::array({i.category});
+        for (const std::string& tag : i.tags)
+            if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+        t["tags"] = tags;
+        t["visibility"] = i.visibility;
+        t["output"] = i.passed() ? std::string() : i.result + (i.message.empty() ? "" : ": " + i.message);
+        t["extra_data"] = {{"category", i.category}, {"result", i.result}, {"seconds", tidy(i.seconds)}};
+        tests.push_back(t);
+    }
+    json categories = json::array();
+    for (const category_total& c : g.categories)
+        categories.push_back({{"name", c.name}, {"title", c.title}, {"score", tidy(c.score)},
+                              {"max_score", tidy(c.max_score)}, {"passed", c.passed}, {"items", c.items}});
+    json r;
+    r["score"] = tidy(g.score);
+    r["execution_time"] = static_cast<int>(std::ceil(g.seconds));
+    r["output"] = summary_text(g);
+    r["stdout_visibility"] = "hidden";
+    r["tests"] = tests;
+    r["extra_data"] = {{"assignment", g.assignment}, {"max_score", tidy(g.max_score)}, {"built", g.built},
+                       {"categories", categories}, {"sandbox", g.sandbox}, {"submission", g.submission},
+                       {"graded_at", g.started_at}};
+    // Messages come from compilers and student code: bytes that are not UTF-8 become U+FFFD.
+    return r.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+void write_results_json(const graded_submission& g, const std::filesystem::path& file) {
+    std::ofstream out(file);
+    out << results_json(g);
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+}  // namespace vl::grader

@@ -1,0 +1,147 @@
+#include "rubric.hh"
+
+#include <algorithm>
+#include <set>
+
+#include <toml++/toml.h>
+
+#include "install.hh"
+
+namespace vl::grader {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::set<std::string> visibilities = {"visible", "hidden", "after_due_date", "after_published"};
+
+std::string place(const fs::path& file, const toml::node& n) {
+    const toml::source_position p = n.source().begin;
+    return file.string() + ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+}
+
+std::vector<std::string> strings(const fs::path& file, const toml::table& t, const char* key) {
+    std::vector<std::string> out;
+    if (const toml::node* n = t.get(key)) {
+        const toml::array* a = n->as_array();
+        if (!a) throw grader_error(place(file, *n) + ": '" + key + "' must be a list of strings");
+        for (const toml::node& e : *a) {
+            if (!e.is_string()) throw grader_error(place(file, e) + ": '" + key + "' must hold strings");
+            out.push_back(*e.value<std::string>());
+        }
+    }
+    return out;
+}
+
+std::string visibility(const fs::path& file, const toml::table& t, const std::string& fallback) {
+    const std::string v = t["visibility"].value_or(fallback);
+    if (!visibilities.contains(v))
+        throw grader_error(place(file, t.get("visibility") ? *t.get("visibility") : static_cast<const toml::node&>(t)) +
+                           ": visibility '" + v + "': use visible, hidden, after_due_date or after_published");
+    return v;
+}
+
+double number(const fs::path& file, const toml::table& t, const char* key, double fallback) {
+    const toml::node* n = t.get(key);
+    if (!n) return fallback;
+    const auto v = n->value<double>();
+    if (!v || *v < 0) throw grader_error(place(file, *n) + ": '" + key + "' must be a number, 0 or more");
+    return *v;
+}
+
+}  // namespace
+
+const rubric_category* rubric::category_of(const test_case_info& t) const {
+    for (const rubric_category& c : categories) {
+        if (std::find(c.tests.begin(), c.tests.end(), t.name) != c.tests.end()) return &c;
+        for (const std::string& tag : c.tags)
+            if (std::find(t.tags.begin(), t.tags.end(), tag) != t.tags.end()) return &c;
+    }
+    return nullptr;
+}
+
+rubric load_rubric(const fs::path& file, bool sanitized) {
+    if (!fs::exists(file)) throw grader_error(file.string() + " is missing: every graded assignment needs a rubric");
+    toml::table t;
+    try {
+        t = toml::parse_file(file.string());
+    } catch (const toml::parse_error& e) {
+        throw grader_error(file.string() + ":" + std::to_string(e.source().begin.line) + ":" +
+                           std::to_string(e.source().begin.column) + ": " + std::string(e.description()));
+    }
+    rubric r;
+    r.file = file;
+    r.assignment = t["assignment"].value_or(std::string());
+    r.title = t["title"].value_or(r.assignment);
+    r.visibility = visibility(file, t, "after_published");
+    if (const toml::table* l = t["limits"].as_table()) {
+        r.test_limits.wall_seconds = number(file, *l, "test_timeout_seconds", 10);
+        r.render_limits.wall_seconds = number(file, *l, "render_timeout_seconds", 60);
+        const double mib = number(file, *l, "memory_mib", 1024);
+        r.test_limits.memory_bytes = r.render_limits.memory_bytes = static_cast<std::uint64_t>(mib) << 20;
+    }
+    // The sanitizers' shadow memory and slower code need room.
+    if (sanitized) {
+        r.test_limits.wall_seconds *= 5;
+        r.render_limits.wall_seconds *= 5;
+    }
+    std::set<std::string> names;
+    if (const toml::array* cats = t["category"].as_array()) {
+        for (const toml::node& n : *cats) {
+            const toml::table& c = *n.as_table();
+            rubric_category cat;
+            cat.name = c["name"].value_or(std::string());
+            if (cat.name.empty()) throw grader_error(place(file, n) + ": a [[category]] needs a name");
+            if (!names.insert(cat.name).second) throw grader_error(place(file, n) + ": category '" + cat.name + "' twice");
+            cat.title = c["title"].value_or(cat.name);
+            cat.points = number(file, c, "points", 0);
+            cat.tags = strings(file, c, "tags");
+            cat.tests = strings(file, c, "tests");
+            cat.visibility = visibility(file, c, r.visibility);
+            r.categories.push_back(cat);
+        }
+    }
+    if (r.categories.empty()) throw grader_error(file.string() + ": no [[category]]: nothing would be graded");
+    if (const toml::array* scenes = t["scene"].as_array()) {
+        for (const toml::node& n : *scenes) {
+            const toml::table& s = *n.as_table();
+            rubric_scene sc;
+            sc.file = file.parent_path() / "scenes" / s["file"].value_or(std::string());
+            if (!fs::is_regular_file(sc.file)) throw grader_error(place(file, n) + ": scene " + sc.file.string() + " is missing");
+            sc.title = s["title"].value_or(sc.file.stem().string());
+            sc.category = s["category"].value_or(std::string());
+            if (!names.contains(sc.category))
+                throw grader_error(place(file, n) + ": scene's category '" + sc.category + "' is not a [[category]]");
+            sc.points = number(file, s, "points", 0);
+            sc.metric = s["metric"].value_or(std::string("mean_abs"));
+            if (sc.metric != "mean_abs")
+                throw grader_error(place(file, n) + ": metric '" + sc.metric + "' is not available yet (mean_abs is)");
+            sc.threshold_levels = static_cast<int>(number(file, s, "threshold_levels", 8));
+            sc.max_mean_difference = number(file, s, "max_mean_difference", 0.5);
+            sc.max_fraction_over = number(file, s, "max_fraction_over", 0.005);
+            const auto cat = std::find_if(r.categories.begin(), r.categories.end(),
+                                          [&](const rubric_category& c) { return c.name == sc.category; });
+            sc.visibility = visibility(file, s, cat->visibility);
+            r.scenes.push_back(sc);
+        }
+    }
+    return r;
+}
+
+void check_rubric(const rubric& r, const std::vector<test_case_info>& tests) {
+    std::string problems;
+    for (const test_case_info& t : tests)
+        if (!r.category_of(t)) problems += "  hidden test '" + t.name + "' is in no category\n";
+    for (const rubric_category& c : r.categories) {
+        for (const std::string& name : c.tests)
+            if (std::none_of(tests.begin(), tests.end(), [&](const test_case_info& t) { return t.name == name; }))
+                problems += "  category '" + c.name + "' names test '" + name + "', which does not exist\n";
+        const bool has_tests = std::any_of(tests.begin(), tests.end(),
+                                           [&](const test_case_info& t) { return r.category_of(t) == &c; });
+        if (c.points > 0 && !has_tests)
+            problems += "  category '" + c.name + "' has " + std::to_string(c.points) + " points but no test\n";
+    }
+    if (!problems.empty()) throw grader_error(r.file.string() + " does not fit the hidden tests:\n" + problems);
+}
+
+}  // namespace vl::grader

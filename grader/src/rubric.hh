@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// \brief An assignment's rubric (grader/hidden/NN-name/rubric.toml): categories with
+/// points, which hidden tests and scenes earn them, limits, Gradescope visibility.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "catch_runner.hh"
+#include "sandbox.hh"
+
+namespace vl::grader {
+
+/// \brief A part of the grade, such as "Rays from inside".
+struct rubric_category {
+    std::string name, title;
+    double points = 0;                ///< shared equally by its tests
+    std::vector<std::string> tags;    ///< Catch2 tags (no brackets) that put a test here
+    std::vector<std::string> tests;   ///< test names that put a test here
+    std::string visibility;
+};
+
+/// \brief A hidden scene, rendered with the submission and compared with the reference.
+struct rubric_scene {
+    std::filesystem::path file;       ///< in grader/hidden/NN-name/scenes
+    std::string title, category, visibility;
+    double points = 0;
+    std::string metric = "mean_abs";  ///< the comparison; "flip" and "ssim" come later
+    int threshold_levels = 8;
+    double max_mean_difference = 0.5;
+    double max_fraction_over = 0.005;
+};
+
+/// \brief A whole rubric.
+struct rubric {
+    std::filesystem::path file;
+    std::string assignment, title, visibility = "after_published";
+    run_limits test_limits, render_limits;
+    std::vector<rubric_category> categories;
+    std::vector<rubric_scene> scenes;
+
+    /// The category of test `t`: the first whose tests or tags claim it, or nullptr.
+    const rubric_category* category_of(const test_case_info& t) const;
+};
+
+/// Reads `file`; throws grader_error naming the file, line and problem.
+rubric load_rubric(const std::filesystem::path& file, bool sanitized);
+
+/// Checks the rubric against the hidden tests: every test has a category, every named
+/// test exists, every category earns its points somewhere. Throws grader_error.
+void check_rubric(const rubric& r, const std::vector<test_case_info>& tests);
+
+}  // namespace vl::grader

@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// \brief Hidden scenes: rendered with the submission's pieces and compared with the
+/// reference render. The comparison is the per-pixel difference of vl::compare_images;
+/// perceptual metrics (FLIP, SSIM), intersection budgets and stability sweeps plug in
+/// through rubric_scene::metric.
+#include <filesystem>
+#include <string>
+
+#include "rubric.hh"
+#include "sandbox.hh"
+
+namespace vl::grader {
+
+/// \brief How a rendered scene compares with the reference.
+struct scene_outcome {
+    bool rendered = false, matches = false;
+    std::string message;                      ///< why it failed, or the comparison's numbers
+    std::filesystem::path image, difference;  ///< the student's render and the difference image
+    double seconds = 0;
+};
+
+/// Renders `scene` with `render_program` (sandboxed) in `work` and compares the image
+/// with `reference`.
+scene_outcome render_and_compare(const std::filesystem::path& render_program, const rubric_scene& scene,
+                                 const std::filesystem::path& reference, const std::filesystem::path& work,
+                                 const run_limits& limits, const sandbox_capabilities& caps);
+
+}  // namespace vl::grader

@@ -1,0 +1,59 @@
+#include "terminal_summary.hh"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ostream>
+
+namespace vl::grader {
+
+namespace {
+
+std::string fixed(double x, int decimals = 1) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+    return buf;
+}
+
+std::string first_line(const std::string& s) {
+    const std::string line = s.substr(0, s.find('\n'));
+    return line.size() > 110 ? line.substr(0, 107) + "..." : line;
+}
+
+}  // namespace
+
+bool stdout_wants_colour() { return isatty(STDOUT_FILENO) && !std::getenv("NO_COLOR"); }
+
+void print_summary(std::ostream& s, const graded_submission& g, const std::filesystem::path& out, bool colour) {
+    const char* green = colour ? "\033[32m" : "";
+    const char* red = colour ? "\033[31m" : "";
+    const char* bold = colour ? "\033[1m" : "";
+    const char* dim = colour ? "\033[2m" : "";
+    const char* reset = colour ? "\033[0m" : "";
+    auto tint = [&](double score, double max) { return score >= max - 1e-9 ? green : red; };
+
+    s << bold << g.assignment << reset << "  " << g.submission << "\n";
+    s << "  score " << tint(g.score, g.max_score) << bold << fixed(g.score) << " / " << fixed(g.max_score) << reset
+      << " (" << (g.max_score > 0 ? std::lround(100 * g.score / g.max_score) : 0) << "%)  " << dim << "in "
+      << fixed(g.seconds) << " s" << reset << "\n";
+    if (!g.built) s << "  " << red << "did not build:" << reset << " " << first_line(g.items.front().message) << "\n";
+    for (const category_total& c : g.categories)
+        s << "  " << tint(c.score, c.max_score) << fixed(c.score) << " / " << fixed(c.max_score) << reset << "  "
+          << c.title << dim << "  (" << c.passed << " of " << c.items << " passed)" << reset << "\n";
+    if (g.built) {
+        int shown = 0;
+        for (const graded_item& i : g.items) {
+            if (i.passed() || i.what == graded_item::kind::build) continue;
+            if (++shown > 8) continue;
+            s << "  " << red << i.result << reset << ": " << i.name << "\n      " << dim << first_line(i.message)
+              << reset << "\n";
+        }
+        if (shown > 8) s << "  ... and " << shown - 8 << " more in the report\n";
+    }
+    for (const std::string& n : g.notes) s << "  note: " << n << "\n";
+    s << "  results " << (out / "results.json").string() << "\n  report  " << (out / "report.html").string() << "\n";
+}
+
+}  // namespace vl::grader

@@ -1,0 +1,30 @@
+# The grader's calibration (ctest label `grader`): every case in
+# grader/tests/submissions/NN-name/CASE/ is graded and checked against its expected.toml
+# (score range, the only categories allowed to lose points, whether it builds).
+file(GLOB calibration_cases LIST_DIRECTORIES true ${CMAKE_CURRENT_LIST_DIR}/submissions/*/*)
+list(SORT calibration_cases)
+foreach(case_dir IN LISTS calibration_cases)
+  if(NOT EXISTS ${case_dir}/expected.toml)
+    continue()
+  endif()
+  get_filename_component(case_name ${case_dir} NAME)
+  get_filename_component(stage_dir ${case_dir} DIRECTORY)
+  get_filename_component(stage ${stage_dir} NAME)
+  if(NOT stage IN_LIST grader_stages)
+    continue()
+  endif()
+  add_test(NAME "grader: ${stage} ${case_name}"
+           COMMAND vl_grader calibrate ${case_dir} --out ${CMAKE_CURRENT_BINARY_DIR}/calibration/${stage}/${case_name})
+  set_tests_properties("grader: ${stage} ${case_name}" PROPERTIES LABELS grader TIMEOUT 600)
+endforeach()
+
+# The student kit: export-kit refuses to write a kit in which any reference line or hidden
+# test name appears (find_leaks); this test also builds the kit as a student does, with the
+# stubs, and checks that its public tests run and fail. Not under the sanitizers: it is a
+# second build of the framework, and the default preset already proves the point.
+if(NOT sanitized)
+  add_test(NAME "grader: the student kit leaks nothing, builds with the stubs, and its tests fail on them"
+           COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kit_test.sh $<TARGET_FILE:vl_grader> ${CMAKE_CURRENT_BINARY_DIR}/kit-test)
+  set_tests_properties("grader: the student kit leaks nothing, builds with the stubs, and its tests fail on them"
+                       PROPERTIES LABELS grader TIMEOUT 1500)
+endif()

@@ -1,0 +1,88 @@
+// Reference: pixel sample patterns (see assignments/01-tuples/stage_01.hh). Jittered
+// (stratified) sampling: R. L. Cook, "Stochastic sampling in computer graphics", ACM
+// Transactions on Graphics 5(1), 1986; M. Pharr, W. Jakob and G. Humphreys, *Physically
+// Based Rendering*, 4th ed., §8.5.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "stage_01.hh"
+
+namespace vl::stage01 {
+
+namespace {
+
+/// The side k of the smallest k x k grid with at least n cells.
+std::size_t grid_side(std::size_t n) {
+    auto k = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
+    while (k * k < n) ++k;  // exact, whatever sqrt rounded to
+    while (k > 0 && (k - 1) * (k - 1) >= n) --k;
+    return k;
+}
+
+/// `value`, or the largest double below `limit` when rounding carried `value` up to it
+/// (pbrt clamps its samples to OneMinusEpsilon for the same reason):
+/// (k - 1 + 0.9999999999999999) / k rounds to exactly 1 for k = 3.
+double below(double value, double limit) { return std::min(value, std::nextafter(limit, 0.0)); }
+
+/// Uniform numbers in [0, 1) from a generator seeded with the pixel's seed only, so a
+/// pixel's offsets are the same on every run, thread and sampler object.
+class uniform_source {
+public:
+    explicit uniform_source(std::uint64_t seed) : rng_(seed) {}
+    double operator()() { return below(u_(rng_), 1.0); }
+
+private:
+    std::mt19937_64 rng_;
+    std::uniform_real_distribution<double> u_{0.0, 1.0};
+};
+
+class center_sampler final : public sampler {
+public:
+    void offsets(std::span<sample_offset> out, std::uint64_t) const override {
+        std::fill(out.begin(), out.end(), sample_offset{0.5, 0.5});
+    }
+};
+
+/// The k x k grid; sample i in cell (i % k, i / k), at its centre or jittered within it.
+class grid_sampler final : public sampler {
+public:
+    explicit grid_sampler(bool jitter) : jitter_(jitter) {}
+
+    void offsets(std::span<sample_offset> out, std::uint64_t seed) const override {
+        const std::size_t k = grid_side(out.size());
+        const double side = static_cast<double>(k);
+        uniform_source u(seed);
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            const double cx = static_cast<double>(i % k), cy = static_cast<double>(i / k);
+            const double jx = jitter_ ? u() : 0.5, jy = jitter_ ? u() : 0.5;
+            out[i] = {below((cx + jx) / side, (cx + 1) / side), below((cy + jy) / side, (cy + 1) / side)};
+        }
+    }
+
+private:
+    bool jitter_;
+};
+
+class random_sampler final : public sampler {
+public:
+    void offsets(std::span<sample_offset> out, std::uint64_t seed) const override {
+        uniform_source u(seed);
+        for (auto& o : out) {
+            o.dx = u();
+            o.dy = u();
+        }
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<sampler> make_sampler(std::string_view name) {
+    if (name == "center") return std::make_unique<center_sampler>();
+    if (name == "grid") return std::make_unique<grid_sampler>(false);
+    if (name == "jittered") return std::make_unique<grid_sampler>(true);
+    if (name == "random") return std::make_unique<random_sampler>();
+    return nullptr;
+}
+
+}  // namespace vl::stage01
