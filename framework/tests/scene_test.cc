@@ -101,7 +101,7 @@ TEST_CASE("flat tracer: an object's colour where it is hit, the background elsew
     CHECK(flat_tracer(miss).trace(r, 0) == color(0, 0, 1));
 }
 
-TEST_CASE("normals tracer: the normal mapped from [-1, 1] to [0, 1]", "[scene][tracer]") {
+TEST_CASE("normals tracer: the normal mapped from -1..1 to 0..1", "[scene][tracer]") {
     const registry types = test_types();
     const scene s = parse_scene("PROBE { t 2 }", "n", types);  // the probe's normal is +z
     CHECK(normals_tracer(s).trace(ray(point(0, 0, 0), vector(0, 0, 1)), 0) == color(0.5, 0.5, 1));
