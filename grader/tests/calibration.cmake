@@ -1,7 +1,7 @@
 # The grader's calibration (ctest label `grader`): every case in
 # grader/tests/submissions/NN-name/CASE/ is graded and checked against its expected.toml
 # (score range, the only categories allowed to lose points, whether it builds).
-file(GLOB calibration_cases LIST_DIRECTORIES true ${CMAKE_CURRENT_LIST_DIR}/submissions/*/*)
+file(GLOB calibration_cases CONFIGURE_DEPENDS LIST_DIRECTORIES true ${CMAKE_CURRENT_LIST_DIR}/submissions/*/*)
 list(SORT calibration_cases)
 foreach(case_dir IN LISTS calibration_cases)
   if(NOT EXISTS ${case_dir}/expected.toml)

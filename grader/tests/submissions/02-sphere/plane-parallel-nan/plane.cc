@@ -1,0 +1,89 @@
+// Reference: the infinite plane (see assignments/02-sphere/stage_02.hh).
+#include <cmath>
+#include <limits>
+#include <ostream>
+
+#include "stage_02.hh"
+
+namespace vl::stage02 {
+
+namespace {
+
+bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool finite(const vector& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+// A normal that unit() can make unit: not zero, not so large or small that its length
+// overflows or underflows.
+bool usable_normal(const vector& n) {
+    const vector u = vector(n.x, n.y, n.z).unit();
+    return finite(n) && finite(u) && std::fabs(u.length() - 1) < 1e-9;
+}
+
+/// \brief The points p with (p - point_on_plane) . normal == 0.
+class plane final : public primitive {
+public:
+    plane(const point& point_on_plane, const vector& normal) { set_geometry(point_on_plane, normal); }
+
+    std::string type_name() const override { return "PLANE"; }
+    vector normal(const point&) const override { return unit_normal_; }
+    bool contains(const point&) const override { return false; }  // a flat object has no inside
+    // Unbounded: min_point() and max_point() keep the default NaN_point ("no box").
+
+    void read(scene_reader& in) override {
+        point p = point_;
+        vector n = normal_;
+        read_with_surface(in, {{"point", [&] {
+                                    const source_location where = in.peek().where;
+                                    p = in.read_point("point of PLANE").homogenized();
+                                    if (!finite(p)) in.fail(where, "point of PLANE must be a finite point (w not 0)");
+                                }},
+                               {"normal", [&] {
+                                    const source_location where = in.peek().where;
+                                    n = in.read_vector("normal of PLANE");
+                                    n.w = 0;
+                                    if (!usable_normal(n))
+                                        in.fail(where, "normal of PLANE must not be the zero vector");
+                                }}});
+        set_geometry(p, n);
+    }
+    void write(std::ostream& s) const override {
+        const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
+        s << "PLANE { point " << point_.x << ' ' << point_.y << ' ' << point_.z << " normal " << normal_.x << ' '
+          << normal_.y << ' ' << normal_.z;
+        s.precision(old_precision);
+        write_surface(s);
+        s << " }";
+    }
+
+private:
+    void set_geometry(const point& point_on_plane, const vector& normal) {
+        point_ = point_on_plane.homogenized();
+        normal_ = vector(normal.x, normal.y, normal.z);
+        unit_normal_ = normal_.unit();
+    }
+
+    // Substitute the ray o + t d into (p - p0) . n = 0: t = ((p0 - o) . n) / (d . n).
+    // A ray parallel to the plane (d . n == 0) never meets it; testing for exactly 0 is
+    // enough, because a tiny d . n gives a huge t, which is a correct far hit (or a miss
+    // when the numerator says the plane is behind the ray), never a NaN or an infinity.
+    // A ray starting on the plane gets a numerator of round-off size: zero_t() rejects it.
+    intersection find_intersection(const ray& r) const override {
+        const double denominator = r.direction() * unit_normal_;
+        const double t = ((point_ - r.origin()) * unit_normal_) / denominator;
+        if (t < std::fabs(zero_t())) return intersection::none();
+        return intersection::at(t, this);
+    }
+
+    point point_;          ///< as given, so write() writes what was read
+    vector normal_;        ///< as given (not unit), for the same reason
+    vector unit_normal_;   ///< normal_.unit()
+};
+
+}  // namespace
+
+std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {
+    if (!finite(point_on_plane.homogenized()) || !usable_normal(normal))
+        throw usage_error("make_plane: the point must be finite and the normal a finite, non-zero vector");
+    return std::make_unique<plane>(point_on_plane, normal);
+}
+
+}  // namespace vl::stage02

@@ -1,0 +1,103 @@
+// Reference: the watertight triangle (see assignments/02-sphere/stage_02.hh).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <ostream>
+#include <string>
+#include <utility>
+
+#include "ray_space.hh"
+#include "stage_02.hh"
+
+namespace vl::stage02 {
+
+namespace {
+
+bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+// Why three points are not a triangle, or "" when they are. Collinear means the sine of
+// the angle at a is below 1e-12: the cross product has no usable direction.
+std::string triangle_problem(const point& a, const point& b, const point& c) {
+    if (!finite(a) || !finite(b) || !finite(c)) return "every vertex must be a finite point (w not 0)";
+    const vector ab = b - a, ac = c - a;
+    if (!((ab % ac).length() > 1e-12 * ab.length() * ac.length()))
+        return "its vertices a, b and c are on one line (or two coincide): it has no area";
+    return "";
+}
+
+/// \brief The triangle a b c; its front is the side from which a, b, c run counter-clockwise.
+class triangle final : public primitive {
+public:
+    triangle(const point& a, const point& b, const point& c) { set_geometry(a, b, c); }
+
+    std::string type_name() const override { return "TRIANGLE"; }
+    vector normal(const point&) const override { return normal_; }
+    bool contains(const point&) const override { return false; }  // a flat object has no inside
+    point min_point() const override {
+        return {std::min({a_.x, b_.x, c_.x}), std::min({a_.y, b_.y, c_.y}), std::min({a_.z, b_.z, c_.z})};
+    }
+    point max_point() const override {
+        return {std::max({a_.x, b_.x, c_.x}), std::max({a_.y, b_.y, c_.y}), std::max({a_.z, b_.z, c_.z})};
+    }
+
+    void read(scene_reader& in) override {
+        const source_location where = in.peek().where;
+        point a = a_, b = b_, c = c_;
+        read_with_surface(in, {{"a", [&] { a = in.read_point("vertex a of TRIANGLE").homogenized(); }},
+                               {"b", [&] { b = in.read_point("vertex b of TRIANGLE").homogenized(); }},
+                               {"c", [&] { c = in.read_point("vertex c of TRIANGLE").homogenized(); }}});
+        if (const std::string problem = triangle_problem(a, b, c); !problem.empty())
+            in.fail(where, "this TRIANGLE is not a triangle: " + problem);
+        set_geometry(a, b, c);
+    }
+    void write(std::ostream& s) const override {
+        const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
+        s << "TRIANGLE {";
+        for (const auto& [key, p] : {std::pair{"a", a_}, std::pair{"b", b_}, std::pair{"c", c_}})
+            s << ' ' << key << ' ' << p.x << ' ' << p.y << ' ' << p.z;
+        s.precision(old_precision);
+        write_surface(s);
+        s << " }";
+    }
+
+private:
+    void set_geometry(const point& a, const point& b, const point& c) {
+        a_ = a.homogenized();
+        b_ = b.homogenized();
+        c_ = c.homogenized();
+        normal_ = ((b_ - a_) % (c_ - a_)).unit();
+    }
+
+    // Watertight ray/triangle intersection (Woop, Benthin and Wald, JCGT 2(1), 2013).
+    // The vertices go to ray space (ray_space.hh), where the ray is the +z axis; the ray
+    // passes through the triangle when the three edge functions U, V, W do not have
+    // mixed signs. A zero counts as inside, so a ray exactly on a shared edge is reported
+    // by both neighbours rather than by neither. Unlike Moeller-Trumbore, no barycentric
+    // coordinate is compared against a rounded 1 - u - v, so no ray slips between the
+    // triangles of a mesh.
+    intersection find_intersection(const ray& r) const override {
+        const ray_space to_ray(r);
+        const ray_space_point a = to_ray(a_), b = to_ray(b_), c = to_ray(c_);
+        const double u = edge_function(b, c), v = edge_function(c, a), w = edge_function(a, b);
+        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return intersection::none();
+        const double det = u + v + w;
+        if (det == 0) return intersection::none();  // the ray lies in the triangle's plane
+        // t is the z of the hit point, interpolated with the (unnormalised) barycentrics.
+        const double t = (u * a.z + v * b.z + w * c.z) / det;
+        if (t > std::fabs(zero_t())) return intersection::at(t, this);
+        return intersection::none();
+    }
+
+    point a_, b_, c_;
+    vector normal_;  ///< ((b - a) % (c - a)).unit()
+};
+
+}  // namespace
+
+std::unique_ptr<primitive> make_triangle(const point& a, const point& b, const point& c) {
+    if (const std::string problem = triangle_problem(a.homogenized(), b.homogenized(), c.homogenized()); !problem.empty())
+        throw usage_error("make_triangle: " + problem);
+    return std::make_unique<triangle>(a, b, c);
+}
+
+}  // namespace vl::stage02
