@@ -1,7 +1,10 @@
 // The grader's command line: `grader/run COMMAND ...` (see grader/README.md). Each
 // command is one entry of the table below, so new ones (imgdiff, roster, gradescope)
 // slot in beside the others.
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -17,6 +20,7 @@
 #include "install.hh"
 #include "report_html.hh"
 #include "results_json.hh"
+#include "sandbox.hh"
 #include "terminal_summary.hh"
 
 namespace {
@@ -89,6 +93,46 @@ struct calibration_case {
     fs::path submission, expected;
 };
 
+// A planted bug is stored as a patch against the current reference (expected.toml:
+// `patch = "bug.patch"`), so it follows every change of the reference and can never go
+// stale silently: when the code it changes is rewritten, the patch stops applying and the
+// calibration says so.
+// `name` found on PATH (the sandbox runs programs by full path).
+fs::path find_on_path(const std::string& name) {
+    const char* path = std::getenv("PATH");
+    std::string dirs = path ? path : "/usr/bin:/bin";
+    for (std::size_t start = 0; start <= dirs.size();) {
+        const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+        const fs::path candidate = fs::path(dirs.substr(start, end - start)) / name;
+        if (access(candidate.c_str(), X_OK) == 0) return candidate;
+        start = end + 1;
+    }
+    throw grader_error("cannot find '" + name + "' on PATH (tools/setup installs it)");
+}
+
+fs::path apply_bug_patch(const installation& in, const calibration_case& c, const fs::path& patch_file) {
+    const fs::path dir = in.grader_build_dir / "calibration-sources" / c.stage / c.name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const auto& e : fs::directory_iterator(in.source_dir / "reference" / c.stage))
+        if (e.is_regular_file()) fs::copy_file(e.path(), dir / e.path().filename());
+    vl::grader::run_request rq;
+    rq.argv = {find_on_path("patch").string(), "--batch", "--forward", "--silent", "-p1", "-d", dir.string(), "-i",
+               fs::absolute(patch_file).string()};
+    rq.cwd = dir;
+    rq.output = dir.parent_path() / (c.name + ".patch.log");
+    rq.environment = vl::grader::child_environment(dir);
+    rq.sandboxed = false;
+    rq.limits.wall_seconds = 30;
+    const auto r = vl::grader::run(rq, vl::grader::sandbox_capabilities{});
+    if (!r.succeeded())
+        throw grader_error(patch_file.string() + ": the patch no longer applies to reference/" + c.stage + " (" +
+                           vl::grader::read_head(rq.output, 1000) +
+                           "); plant the bug again in a copy of the current reference and remake the patch with "
+                           "diff -u --label a/FILE --label b/FILE reference/" + c.stage + "/FILE COPY/FILE");
+    return dir;
+}
+
 calibration_case read_case(const installation& in, const fs::path& dir) {
     calibration_case c;
     c.expected = dir / "expected.toml";
@@ -107,7 +151,8 @@ calibration_case read_case(const installation& in, const fs::path& dir) {
     }
     c.description = t["description"].value_or(std::string());
     const std::string from = t["submission"].value_or(std::string());
-    c.submission = from.empty() ? dir : in.source_dir / from;
+    const std::string patch = t["patch"].value_or(std::string());
+    c.submission = !patch.empty() ? apply_bug_patch(in, c, dir / patch) : from.empty() ? dir : in.source_dir / from;
     return c;
 }
 
