@@ -113,12 +113,17 @@ public:
     void print_overhead() const {
         const auto base = fastest_.find("baseline_uncounted");
         if (base == fastest_.end()) return;
-        for (const char* name : {"counted_intersect", "counted_object_list"}) {
-            const auto it = fastest_.find(name);
-            if (it == fastest_.end()) continue;
-            std::printf("%-20s %+.1f%% against baseline_uncounted (fastest of each, same run; goal: under 3%%)\n",
-                        name, 100 * (it->second / base->second - 1));
-        }
+        const auto counted = fastest_.find("counted_intersect");
+        if (counted != fastest_.end())
+            std::printf("cost of counting: %+.1f%% (counted_intersect against baseline_uncounted, fastest of each, "
+                        "same run; goal: under 3%%)\n",
+                        100 * (counted->second / base->second - 1));
+        // The list differs from the hand-written loop by more than counting (its own
+        // composite test, the unique_ptr children), so it is shown, not judged.
+        const auto list = fastest_.find("counted_object_list");
+        if (list != fastest_.end())
+            std::printf("object_list traversal: %+.1f%% against the hand-written loop\n",
+                        100 * (list->second / base->second - 1));
     }
 
 private:
