@@ -170,13 +170,53 @@ std::vector<calibration_case> all_cases(const installation& in) {
     return cases;
 }
 
+/// What in `r` breaks Gradescope's documented results.json format (the autograder
+/// specification: top-level score, execution_time, output, stdout_visibility, tests; each
+/// test's score, max_score, status, name, number, output, tags, visibility).
+std::vector<std::string> gradescope_format_problems(const nlohmann::json& r) {
+    std::vector<std::string> problems;
+    auto need = [&](const nlohmann::json& j, const char* key, auto is_type, const char* type, const std::string& where) {
+        if (!j.contains(key) || !is_type(j[key])) problems.push_back(where + "\"" + key + "\" must be " + type);
+    };
+    const auto number = [](const nlohmann::json& j) { return j.is_number(); };
+    const auto string = [](const nlohmann::json& j) { return j.is_string(); };
+    const auto visibility = [](const nlohmann::json& j) {
+        return j.is_string() && (j == "hidden" || j == "after_due_date" || j == "after_published" || j == "visible");
+    };
+    need(r, "score", number, "a number", "");
+    need(r, "execution_time", number, "a number", "");
+    need(r, "output", string, "a string", "");
+    need(r, "stdout_visibility", visibility, "a visibility", "");
+    if (!r.contains("tests") || !r["tests"].is_array()) {
+        problems.push_back("\"tests\" must be an array");
+        return problems;
+    }
+    for (const auto& t : r["tests"]) {
+        const std::string where = "test " + (t.contains("name") ? t["name"].dump() : std::string("?")) + ": ";
+        need(t, "name", string, "a string", where);
+        need(t, "number", string, "a string", where);
+        need(t, "score", number, "a number", where);
+        need(t, "max_score", number, "a number", where);
+        need(t, "output", string, "a string", where);
+        need(t, "visibility", visibility, "a visibility", where);
+        need(t, "status", [](const nlohmann::json& j) { return j == "passed" || j == "failed"; }, "passed or failed",
+             where);
+        need(t, "tags", [](const nlohmann::json& j) { return j.is_array(); }, "an array", where);
+        if (t.contains("score") && t.contains("max_score") && t["score"].is_number() && t["max_score"].is_number() &&
+            (t["score"].get<double>() < 0 || t["score"].get<double>() > t["max_score"].get<double>() + 1e-9))
+            problems.push_back(where + "score outside 0..max_score");
+    }
+    return problems;
+}
+
 /// Compares a grade with expected.toml: the score's range in percent, which categories
-/// must lose points (every other one must keep full marks), whether it built.
+/// must lose points (every other one must keep full marks), whether it built; and checks
+/// that results.json keeps to Gradescope's format.
 std::vector<std::string> check_expectations(const fs::path& results, const fs::path& expected) {
     std::ifstream in(results);
     const nlohmann::json r = nlohmann::json::parse(in);
     const toml::table t = toml::parse_file(expected.string());
-    std::vector<std::string> problems;
+    std::vector<std::string> problems = gradescope_format_problems(r);
     const double score = r["score"], max = r["extra_data"]["max_score"];
     const double percent = max > 0 ? 100 * score / max : 0;
     if (const toml::array* range = t["score_percent"].as_array()) {
