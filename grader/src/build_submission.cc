@@ -1,7 +1,21 @@
 #include "build_submission.hh"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <map>
+#include <mutex>
+#include <set>
 #include <sstream>
+#include <thread>
 #include <vector>
+
+#include "policy.hh"
+#include "safe_files.hh"
 
 namespace vl::grader {
 
@@ -15,19 +29,71 @@ void replace_all(std::string& s, const std::string& from, const std::string& to)
         s.replace(at, from.size(), to);
 }
 
+std::string stem_of(const std::string& file) { return fs::path(file).stem().string(); }
+
+bool is_regular(const fs::path& p) {
+    std::error_code ec;
+    return fs::symlink_status(p, ec).type() == fs::file_type::regular;
+}
+
+/// A prebuilt part mounted into the link sandbox under a neutral name.
+struct prebuilt_part {
+    fs::path host;
+    std::string inside;
+};
+
+/// Every protected symbol (see check_symbols): what the parts linked with the student's
+/// code and the shared libraries it runs with define.
+void collect_protected(const installation& in, const stage_info& stage, const std::vector<prebuilt_part>& parts,
+                       const sandbox_capabilities& caps, std::set<std::string>& all, std::set<std::string>& strong) {
+    auto nm = [&](std::vector<std::string> argv) {
+        run_request rq;
+        rq.argv = std::move(argv);
+        rq.cwd = in.grader_build_dir.string();
+        rq.environment = child_environment(in.grader_build_dir.string());
+        rq.sandboxed = false;
+        rq.limits.wall_seconds = 60;
+        rq.limits.output_bytes = 256 << 20;
+        const run_result r = run(rq, caps);
+        if (!r.succeeded()) throw grader_error("nm failed on the grader's own parts: " + r.output_head(400));
+        return r.output;
+    };
+    std::vector<std::string> argv = {"/usr/bin/nm", "-A", "-P", "-g", "--defined-only", "--no-sort"};
+    for (const prebuilt_part& p : parts) argv.push_back(p.host.string());
+    std::vector<std::string> shared = {"/usr/bin/nm", "-A", "-P", "-D", "--defined-only", "--no-sort"};
+    // The shared libraries: those the trusted test program (or the reference renderer) loads.
+    run_request ldd;
+    ldd.argv = {"/usr/bin/ldd", (stage.trusted_tests.empty() ? in.reference_renderer : stage.trusted_tests).string()};
+    ldd.cwd = in.grader_build_dir.string();
+    ldd.environment = child_environment(in.grader_build_dir.string());
+    ldd.sandboxed = false;
+    ldd.limits.wall_seconds = 30;
+    const run_result libs = run(ldd, caps);
+    std::istringstream lines(libs.output);
+    for (std::string line; std::getline(lines, line);) {
+        const auto arrow = line.find("=> /");
+        std::string path = arrow != std::string::npos ? line.substr(arrow + 3) : line.substr(line.find_first_not_of(" \t"));
+        path = path.substr(0, path.find(' '));
+        if (path.starts_with("/") && is_regular(fs::canonical(path))) shared.push_back(path);
+    }
+    for (const auto& out : {nm(argv), shared.size() > 6 ? nm(shared) : std::string()})
+        for (const auto& [file, s] : parse_nm(out, out)) {
+            all.insert(s.name);
+            if (s.type != 'W' && s.type != 'V' && s.type != 'w' && s.type != 'v' && s.type != 'u')
+                strong.insert(s.name);
+        }
+}
+
 }  // namespace
 
-std::string trim_compiler_errors(const std::string& log, const fs::path& sources, int max_lines) {
+std::string trim_compiler_errors(const std::string& log, int max_lines) {
     std::vector<std::string> lines;
     std::istringstream in(log);
     for (std::string line; std::getline(in, line);) {
-        // Ninja's progress and the failed command lines say nothing a student can use.
-        if (line.starts_with("[") || line.starts_with("FAILED: ") || line.starts_with("ninja: ") ||
-            line.find("/usr/bin/c++") != std::string::npos || line.find("ccache ") != std::string::npos)
-            continue;
-        replace_all(line, sources.string() + "/", "");
-        // The build runs beside the sources, so the compiler also names them relatively.
-        replace_all(line, "../" + sources.parent_path().filename().string() + "/" + sources.filename().string() + "/", "");
+        replace_all(line, "/submission/", "");
+        replace_all(line, "/vl/framework/", "<framework>/");
+        replace_all(line, "/vl/contract/", "<contract>/");
+        replace_all(line, "/out/", "");
         lines.push_back(line);
     }
     std::size_t first = 0;
@@ -42,54 +108,216 @@ std::string trim_compiler_errors(const std::string& log, const fs::path& sources
     return out;
 }
 
+std::string explain_link_errors(const std::string& log) {
+    std::set<std::string> missing, twice;
+    std::vector<std::string> other;
+    std::istringstream in(log);
+    for (std::string line; std::getline(in, line);) {
+        for (const auto& [marker, into] : {std::pair<const char*, std::set<std::string>*>{"undefined reference to ", &missing},
+                                           {"multiple definition of ", &twice}}) {
+            const auto at = line.find(marker);
+            if (at == std::string::npos) continue;
+            std::string symbol = line.substr(at + std::string(marker).size());
+            if (symbol.size() >= 2 && (symbol.front() == '`' || symbol.front() == '\'')) symbol = symbol.substr(1);
+            if (const auto end = symbol.rfind('\''); end != std::string::npos) symbol.erase(end);
+            into->insert(symbol);
+        }
+        if (line.find("error:") != std::string::npos && line.find("collect2") == std::string::npos &&
+            line.find("ld returned") == std::string::npos && line.find("/vl/prebuilt") == std::string::npos)
+            other.push_back(line);
+    }
+    std::string out = "your code does not link with the tests and the framework:\n";
+    for (const std::string& s : missing) out += "  missing: " + s + " (declared, but your files do not define it)\n";
+    for (const std::string& s : twice)
+        out += "  defined twice: " + s + " (define it once, in one .cc file, or make it inline or static)\n";
+    for (std::size_t k = 0; k < other.size() && k < 10; ++k) {
+        std::string l = other[k];
+        replace_all(l, "/in/", "");
+        out += "  " + l + "\n";
+    }
+    if (missing.empty() && twice.empty() && other.empty()) out += "  (the linker gave no reason a student can act on)\n";
+    return out;
+}
+
 build_outcome build_submission(const prepared_submission& sub, const stage_info& stage, const installation& in,
-                               const fs::path& build_dir, const sandbox_capabilities& caps) {
+                               const fs::path& work, const sandbox_capabilities& caps, const build_options& options) {
     build_outcome b;
-    fs::create_directories(build_dir);
-    const fs::path ccache_dir = in.grader_build_dir / "ccache";
-    fs::create_directories(ccache_dir);
-    give_to_sandbox(build_dir, caps);
-    give_to_sandbox(sub.sources.parent_path(), caps);
-    give_to_sandbox(ccache_dir, caps);
+    const auto start = std::chrono::steady_clock::now();
+    auto left = [&] {
+        return options.wall_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    const fs::path objects = work / "objects", bin = work / "bin";
+    std::error_code ec;
+    fs::create_directories(work, ec);
+    make_sandbox_dir(objects, caps);
+    make_sandbox_dir(bin, caps);
 
-    run_request rq;
-    rq.cwd = build_dir;
-    // Paths relative to the work folder, and no build folder in the hash: the same file in
-    // two submissions (an untouched stub, a helper copied from the handout) compiles once.
-    rq.environment = child_environment(build_dir, {"CCACHE_DIR=" + ccache_dir.string(), "CCACHE_UMASK=002",
-                                                   "CCACHE_BASEDIR=" + build_dir.parent_path().string(),
-                                                   "CCACHE_NOHASHDIR=1"});
-    rq.limits.memory_bytes = std::uint64_t{4} << 30;
-    rq.limits.file_bytes = std::uint64_t{1} << 30;
-    rq.limits.processes = 512;
-
-    rq.argv = {in.cmake.string(), "-S", (in.source_dir / "grader" / "submission").string(), "-B", build_dir.string(),
-               "-G", in.generator, "-DCMAKE_MAKE_PROGRAM=" + in.make_program.string(),
-               "-DCMAKE_CXX_COMPILER=" + in.cxx_compiler, "-DCMAKE_CXX_COMPILER_LAUNCHER=" + in.compiler_launcher,
-               "-DVL_PREBUILT=" + in.prebuilt.string(), "-DVL_STAGE=" + stage.number,
-               "-DVL_SUBMISSION_DIR=" + sub.sources.string(), "-DVL_CONTRACT_DIR=" + sub.contract.string()};
-    rq.output = build_dir / "configure.log";
-    rq.limits.wall_seconds = 120;
-    const run_result configured = run(rq, caps);
-    b.seconds = configured.seconds;
-    if (!configured.succeeded()) {
-        b.errors = "configuring the build failed (" + configured.describe(120) + "):\n" +
-                   trim_compiler_errors(read_head(rq.output, 64 << 10), sub.sources);
+    // 1. Preprocess and compile each file, two at a time.
+    std::vector<std::string> flags = in.cxx_flags;
+    flags.insert(flags.end(), {"-std=c++20", "-pipe", "-fdiagnostics-color=never", "-Wall", "-Wextra",
+                               "-ffile-prefix-map=/submission/=assignments/" + stage.name + "/"});
+    const std::vector<mount> compile_mounts = {{sub.sources, "/submission", false},
+                                               {sub.contract, "/vl/contract", false},
+                                               {in.source_dir / "framework" / "include", "/vl/framework", false},
+                                               {objects, "/out", true}};
+    std::vector<std::string> failures(sub.files.size());
+    std::vector<bool> ok(sub.files.size(), false);
+    std::size_t next = 0;
+    std::mutex m;
+    std::string grader_failure;
+    auto worker = [&] {
+        for (;;) {
+            std::size_t k;
+            {
+                std::lock_guard lock(m);
+                if (next >= sub.files.size()) return;
+                k = next++;
+            }
+            const std::string& file = sub.files[k];
+            const std::string stem = stem_of(file);
+            run_request rq;
+            rq.mounts = compile_mounts;
+            rq.environment = child_environment("/scratch");
+            rq.limits.memory_bytes = std::uint64_t{4} << 30;
+            rq.limits.file_bytes = std::uint64_t{256} << 20;
+            rq.limits.scratch_bytes = std::uint64_t{256} << 20;
+            rq.limits.processes = 16;
+            rq.argv = {in.cxx_compiler.string()};
+            rq.argv.insert(rq.argv.end(), flags.begin(), flags.end());
+            rq.argv.insert(rq.argv.end(), {"-I/vl/contract", "-I/submission", "-I/vl/framework", "-E",
+                                           "/submission/" + file, "-o", "/out/" + stem + ".ii"});
+            rq.limits.wall_seconds = std::max(1.0, std::min(60.0, left()));
+            run_result r = run(rq, caps);
+            if (r.succeeded()) {
+                rq.argv = {in.cxx_compiler.string()};
+                rq.argv.insert(rq.argv.end(), flags.begin(), flags.end());
+                rq.argv.insert(rq.argv.end(), {"-c", "/out/" + stem + ".ii", "-o", "/out/" + stem + ".o"});
+                rq.limits.wall_seconds = std::max(1.0, std::min(180.0, left()));
+                r = run(rq, caps);
+            }
+            std::lock_guard lock(m);
+            if (!r.started) grader_failure = r.error;
+            ok[k] = r.succeeded();
+            if (!ok[k]) {
+                failures[k] = (r.timed_out || r.signal != 0 ? file + ": the compiler " + r.describe(rq.limits.wall_seconds) +
+                                                                  (r.signal == SIGXFSZ ? " (its output grew past 256 MiB)" : "") + "\n"
+                                                            : std::string()) +
+                              trim_compiler_errors(r.output);
+            }
+        }
+    };
+    {
+        std::vector<std::jthread> workers;
+        for (int t = 0; t < 2; ++t) workers.emplace_back(worker);
+    }
+    if (!grader_failure.empty()) throw grader_error("the sandbox could not run the compiler: " + grader_failure);
+    b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (std::size_t k = 0; k < sub.files.size(); ++k)
+        if (!ok[k]) b.errors += failures[k];
+    if (!b.errors.empty()) {
+        b.errors = trim_compiler_errors(b.errors, 40);
         return b;
     }
-    rq.argv = {in.cmake.string(), "--build", build_dir.string(), "--", "-k", "0"};
-    rq.output = build_dir / "build.log";
-    rq.limits.wall_seconds = 300;
-    const run_result built = run(rq, caps);
-    b.seconds += built.seconds;
-    if (!built.succeeded()) {
-        b.errors = (built.timed_out ? "the build " + built.describe(300) + "\n" : std::string()) +
-                   trim_compiler_errors(read_head(rq.output, 256 << 10), sub.sources);
-        return b;
+
+    // The prebuilt parts, under neutral names.
+    std::vector<prebuilt_part> hidden, renderer, group;
+    for (std::size_t k = 0; k < stage.hidden_objects.size(); ++k)
+        hidden.push_back({stage.hidden_objects[k], "/vl/prebuilt/tests" + std::to_string(k) + ".o"});
+    for (std::size_t k = 0; k < in.renderer_objects.size(); ++k)
+        renderer.push_back({in.renderer_objects[k], "/vl/prebuilt/rt" + std::to_string(k) + ".o"});
+    for (const auto& [name, s] : in.stages)
+        if (name != stage.name) group.push_back({s.reference_library, "/vl/prebuilt/reference_" + s.number + ".a"});
+    for (std::size_t k = 0; k < in.framework_libraries.size(); ++k)
+        group.push_back({in.framework_libraries[k], "/vl/prebuilt/framework" + std::to_string(k) + ".a"});
+    const prebuilt_part catch_main{in.catch_main, "/vl/prebuilt/catch_main.a"};
+
+    // 2. The policy: the symbols of every object, and the student's lines of every source.
+    if (options.policy) {
+        std::vector<std::string> names;
+        for (const std::string& f : sub.files) names.push_back("/in/" + stem_of(f) + ".o");
+        run_request rq;
+        rq.mounts = {{objects, "/in", false}};
+        rq.environment = child_environment("/scratch");
+        rq.limits.wall_seconds = std::max(1.0, std::min(60.0, left()));
+        rq.limits.output_bytes = 64 << 20;
+        rq.argv = {"/usr/bin/nm", "-A", "-P", "--no-sort"};
+        rq.argv.insert(rq.argv.end(), names.begin(), names.end());
+        const run_result mangled = run(rq, caps);
+        rq.argv.insert(rq.argv.begin() + 1, "-C");
+        const run_result demangled = run(rq, caps);
+        if (!mangled.started || !demangled.started) throw grader_error("the sandbox could not run nm: " + mangled.error);
+        std::vector<policy_finding> found;
+        if (!mangled.succeeded() || mangled.output_bytes > mangled.output.size()) {
+            found.push_back({"", 0, "nm", "has object files nm cannot list"});
+        } else {
+            std::set<std::string> protected_symbols, strong;
+            std::vector<prebuilt_part> parts = hidden;
+            parts.insert(parts.end(), renderer.begin(), renderer.end());
+            parts.insert(parts.end(), group.begin(), group.end());
+            parts.push_back(catch_main);
+            collect_protected(in, stage, parts, caps, protected_symbols, strong);
+            std::map<std::string, std::vector<object_symbol>> per_file;
+            for (auto& [file, s] : parse_nm(mangled.output, demangled.output)) per_file[file].push_back(s);
+            for (const std::string& f : sub.files) {
+                const auto symbols = per_file["/in/" + stem_of(f) + ".o"];
+                for (policy_finding& p : check_symbols(f, symbols, protected_symbols, strong)) found.push_back(p);
+                const std::string text = read_regular_file(objects / (stem_of(f) + ".ii"), std::size_t{256} << 20);
+                for (policy_finding& p : check_preprocessed(text, "/submission/")) found.push_back(p);
+            }
+        }
+        if (!found.empty()) {
+            b.refused = true;
+            b.errors = "refused: your code does what stage code may not do, so none of it was run:\n";
+            for (std::size_t k = 0; k < found.size() && k < 20; ++k) b.errors += "  " + found[k].describe() + "\n";
+            if (found.size() > 20) b.errors += "  [... " + std::to_string(found.size() - 20) + " more]\n";
+            b.errors += "A stage's pieces only compute: they do not open or write files, end the process, start "
+                        "processes, send signals, use the network, load code, map memory, make system calls, use "
+                        "inline assembly, run code before main, touch the intersection counters or the test "
+                        "framework, or replace the framework's symbols. Printing to std::cout and std::cerr is "
+                        "fine. Remove what is named above and hand in again.\n";
+            b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            return b;
+        }
     }
+
+    // 3. Link, seeing only objects.
+    auto link = [&](const std::string& program, const std::vector<prebuilt_part>& first, bool with_catch) {
+        run_request rq;
+        rq.mounts = {{objects, "/in", false}, {bin, "/out", true}};
+        std::vector<std::string> argv = {in.cxx_compiler.string()};
+        argv.insert(argv.end(), in.link_flags.begin(), in.link_flags.end());
+        argv.insert(argv.end(), {"-pthread", "-o", "/out/" + program});
+        auto add = [&](const prebuilt_part& p) {
+            rq.mounts.push_back({p.host, p.inside, false});
+            argv.push_back(p.inside);
+        };
+        for (const prebuilt_part& p : first) add(p);
+        for (const std::string& f : sub.files) argv.push_back("/in/" + stem_of(f) + ".o");
+        argv.push_back("-Wl,--start-group");
+        if (with_catch) add(catch_main);
+        for (const prebuilt_part& p : group) add(p);
+        argv.push_back("-Wl,--end-group");
+        argv.insert(argv.end(), in.system_libraries.begin(), in.system_libraries.end());
+        rq.argv = argv;
+        rq.environment = child_environment("/scratch");
+        rq.limits.wall_seconds = std::max(1.0, std::min(120.0, left()));
+        rq.limits.memory_bytes = std::uint64_t{4} << 30;
+        rq.limits.file_bytes = std::uint64_t{1} << 30;
+        rq.limits.scratch_bytes = std::uint64_t{256} << 20;
+        rq.limits.processes = 16;
+        const run_result r = run(rq, caps);
+        if (!r.started) throw grader_error("the sandbox could not run the linker: " + r.error);
+        if (!r.succeeded())
+            b.errors += r.timed_out ? "linking " + r.describe(rq.limits.wall_seconds) + "\n" : explain_link_errors(r.output);
+        return r.succeeded() && is_regular(bin / program);
+    };
+    const bool tests_ok = hidden.empty() || link("hidden_tests", hidden, true);
+    const bool render_ok = tests_ok && link("render", renderer, false);
+    b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!tests_ok || !render_ok) return b;
     b.ok = true;
-    if (fs::exists(build_dir / "hidden_tests")) b.tests_program = build_dir / "hidden_tests";
-    b.render_program = build_dir / "render";
+    if (!hidden.empty()) b.tests_program = bin / "hidden_tests";
+    b.render_program = bin / "render";
     return b;
 }
 

@@ -87,17 +87,16 @@ std::string exact_test_spec(const std::string& name) {
 std::vector<test_case_info> list_trusted_tests(const fs::path& program, const fs::path& work,
                                                const sandbox_capabilities& caps) {
     fs::create_directories(work);
-    const fs::path xml = work / "trusted.xml";
     run_request rq;
-    rq.argv = {program.string(), "-r", "xml", "-o", xml.string()};
-    rq.cwd = work;
-    rq.output = work / "trusted.log";
-    rq.environment = child_environment(work);
+    rq.argv = {program.string(), "-r", "xml", "-o", "/dev/fd/3"};
+    rq.cwd = work.string();
+    rq.environment = child_environment(work.string());
     rq.limits.wall_seconds = 300;
+    rq.report_fd = true;
     rq.sandboxed = false;
     const run_result r = run(rq, caps);
     pugi::xml_document doc;
-    if (!r.started || r.timed_out || !doc.load_file(xml.c_str()))
+    if (!r.started || r.timed_out || !doc.load_buffer(r.report.data(), r.report.size()))
         throw grader_error("the trusted hidden tests " + program.string() + " did not report (" + r.describe(300) +
                            "); rebuild with tools/setup");
     std::vector<test_case_info> tests;
@@ -119,54 +118,58 @@ std::vector<test_case_info> list_trusted_tests(const fs::path& program, const fs
     return tests;
 }
 
-test_outcome run_test_case(const fs::path& program, const std::string& name, const fs::path& work,
-                           const run_limits& limits, const sandbox_capabilities& caps) {
-    fs::create_directories(work);
-    give_to_sandbox(work, caps);
-    const fs::path xml = work / "report.xml";
+test_outcome run_test_case(const fs::path& program, const std::string& name, const run_limits& limits,
+                           const sandbox_capabilities& caps) {
     run_request rq;
-    rq.argv = {program.string(), exact_test_spec(name), "-r", "xml", "-o", xml.string()};
-    rq.cwd = work;
-    rq.output = work / "output.txt";
-    rq.environment = child_environment(work);
+    rq.mounts = {{program, "/vl/bin/hidden_tests", false}};
+    rq.argv = {"/vl/bin/hidden_tests", exact_test_spec(name), "-r", "xml", "-o", "/dev/fd/3"};
+    rq.environment = child_environment("/scratch");
     rq.limits = limits;
+    rq.report_fd = true;
     const run_result r = run(rq, caps);
 
     test_outcome o;
     o.seconds = r.seconds;
-    if (!r.started) {
-        o.result = test_outcome::status::crashed;
-        o.message = "the test program " + r.describe(limits.wall_seconds);
-        return o;
-    }
+    if (!r.started) throw grader_error("the sandbox could not run the hidden tests: " + r.error);
     if (r.timed_out) {
         o.result = test_outcome::status::timed_out;
         o.message = "the test " + r.describe(limits.wall_seconds);
         return o;
     }
-    // Only the report counts, and only a report of exactly this test case.
+    if (r.report_overflow) {
+        o.result = test_outcome::status::failed;
+        o.message = "the test's report grew past " + std::to_string(limits.report_bytes >> 20) + " MiB";
+        return o;
+    }
+    // Only the report counts: a report of exactly this test case, finished (its own result
+    // and the run's totals written), from a process that then exited cleanly.
     pugi::xml_document doc;
     pugi::xml_node test;
     int reported = 0;
-    if (doc.load_file(xml.c_str())) {
+    const bool parsed = doc.load_buffer(r.report.data(), r.report.size());
+    if (parsed) {
         for (const pugi::xpath_node& x : doc.select_nodes("//TestCase")) {
             ++reported;
             if (x.node().attribute("name").as_string() == name) test = x.node();
         }
     }
+    const bool finished = parsed && test && test.child("OverallResult") &&
+                          doc.select_node("/*/OverallResults") && reported == 1;
     std::string message;
     int count = 0;
     if (test) collect_failures(test, message, count);
     if (count > 6) message += "[... " + std::to_string(count - 6) + " more failures]\n";
-    const bool success = test && reported == 1 && test.child("OverallResult").attribute("success").as_bool(false);
+    const bool success = finished && test.child("OverallResult").attribute("success").as_bool(false);
     if (success && r.succeeded()) {
         o.result = test_outcome::status::passed;
-    } else if (r.signal != 0 || !test || test.child("FatalErrorCondition") ||
+    } else if (r.signal != 0 || !finished || test.child("FatalErrorCondition") ||
                test.select_node(".//FatalErrorCondition")) {
         o.result = test_outcome::status::crashed;
-        o.message = message + "the test program was " + r.describe(limits.wall_seconds) +
-                    (test ? "" : " before it reported this test");
-        if (r.exit_code == 0 && !test) o.message = "the test program ended without reporting this test";
+        if (r.signal != 0 || r.exit_code != 0)
+            o.message = message + "the test program was " + r.describe(limits.wall_seconds) +
+                        (finished ? "" : " before the test finished");
+        else
+            o.message = message + "the test program ended before the test finished";
     } else {
         o.result = test_outcome::status::failed;
         o.message = message.empty() ? "the test program ended with " + r.describe(limits.wall_seconds) : message;

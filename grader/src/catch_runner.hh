@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// \brief Running Catch2 test programs one test case per process, and reading only what
-/// Catch2's XML reporter wrote to a file the grader named (never the program's output).
+/// Catch2's XML reporter wrote to a pipe the grader gave it (never the program's output).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -32,9 +32,8 @@ const char* to_string(test_outcome::status s);
 std::vector<test_case_info> list_trusted_tests(const std::filesystem::path& program, const std::filesystem::path& work,
                                                const sandbox_capabilities& caps);
 
-/// Runs the test case `name` of `program` alone, in `work` (created, one per test).
-test_outcome run_test_case(const std::filesystem::path& program, const std::string& name,
-                           const std::filesystem::path& work, const run_limits& limits,
+/// Runs the test case `name` of `program` alone, in a sandbox of its own.
+test_outcome run_test_case(const std::filesystem::path& program, const std::string& name, const run_limits& limits,
                            const sandbox_capabilities& caps);
 
 /// A Catch2 test spec that matches exactly `name` (its special characters escaped).

@@ -115,14 +115,12 @@ void export_kit(const installation& in, const fs::path& dir) {
     run_request rq;
     rq.argv = {"/bin/tar", "-czf", tarball.string(), "-C", fs::absolute(dir).parent_path().string(),
                dir.filename().string()};
-    rq.cwd = fs::absolute(dir).parent_path();
-    rq.output = fs::absolute(dir).parent_path() / (dir.filename().string() + ".tar.log");
+    rq.cwd = fs::absolute(dir).parent_path().string();
     rq.environment = child_environment(rq.cwd);
     rq.sandboxed = false;
     rq.limits.wall_seconds = 300;
     const run_result r = run(rq, sandbox_capabilities{});
-    if (!r.succeeded()) throw grader_error("tar could not write " + tarball.string() + ": " + read_head(rq.output, 600));
-    fs::remove(rq.output);
+    if (!r.succeeded()) throw grader_error("tar could not write " + tarball.string() + ": " + r.output_head(600));
 }
 
 }  // namespace vl::grader

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <map>
 
@@ -25,23 +26,43 @@ std::string now_utc() {
     return buf;
 }
 
-/// A folder name for test number k: short, and the same on every run.
-std::string work_name(const char* prefix, std::size_t k) { return prefix + std::to_string(k + 1); }
+/// Shares `points` among `n` items in thousandths of a point, the first ones taking the
+/// remainder, so the shares add up to exactly the points.
+std::vector<long long> shares(double points, std::size_t n) {
+    std::vector<long long> out(n, 0);
+    if (n == 0) return out;
+    const long long total = std::llround(points * 1000);
+    for (std::size_t k = 0; k < n; ++k)
+        out[k] = total / static_cast<long long>(n) + (static_cast<long long>(k) < total % static_cast<long long>(n) ? 1 : 0);
+    return out;
+}
 
 void add_up(graded_submission& g, const rubric& r) {
     std::map<std::string, category_total> totals;
+    std::map<std::string, long long> score_units, max_units;
+    long long all_score = 0, all_max = 0;
     for (const rubric_category& c : r.categories) totals[c.name] = {c.name, c.title, 0, 0, 0, 0};
-    for (const graded_item& i : g.items) {
+    for (graded_item& i : g.items) {
         if (i.what == graded_item::kind::build) continue;
+        const long long earned = i.passed() ? i.max_units : 0;
+        i.max_score = static_cast<double>(i.max_units) / 1000;
+        i.score = static_cast<double>(earned) / 1000;
         category_total& t = totals[i.category];
-        t.score += i.score;
-        t.max_score += i.max_score;
+        score_units[i.category] += earned;
+        max_units[i.category] += i.max_units;
         t.items += 1;
         t.passed += i.passed();
-        g.score += i.score;
-        g.max_score += i.max_score;
+        all_score += earned;
+        all_max += i.max_units;
     }
-    for (const rubric_category& c : r.categories) g.categories.push_back(totals[c.name]);
+    for (const rubric_category& c : r.categories) {
+        category_total t = totals[c.name];
+        t.score = static_cast<double>(score_units[c.name]) / 1000;
+        t.max_score = static_cast<double>(max_units[c.name]) / 1000;
+        g.categories.push_back(t);
+    }
+    g.score = static_cast<double>(all_score) / 1000;
+    g.max_score = static_cast<double>(all_max) / 1000;
 }
 
 }  // namespace
@@ -51,16 +72,25 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     const auto start = std::chrono::steady_clock::now();
     graded_submission g;
     g.assignment = stage.name;
-    g.submission = submission.string();
+    g.submission = submission.filename().string();
     g.started_at = now_utc();
-    const sandbox_capabilities caps = probe_sandbox(in.sanitized);
+    const sandbox_capabilities caps = probe_sandbox(in.sanitized, options.weaker_sandbox);
     g.sandbox = caps.summary();
+    if (!options.policy) g.sandbox += "; the source and symbol policy was OFF (a sandbox test)";
 
     const rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.sanitized);
     g.title = r.title;
-    const fs::path work = options.out / "work";
-    fs::remove_all(work);
-    fs::create_directories(work);
+    const fs::path work = options.out / "work", renders = options.out / "renders";
+    std::error_code ec;
+    for (const fs::path& old : {work, renders}) {
+        fs::remove_all(old, ec);
+        if (ec) throw grader_error("cannot clear " + old.string() + ": " + ec.message());
+        fs::create_directories(old, ec);
+        if (ec) throw grader_error("cannot make " + old.string() + ": " + ec.message());
+    }
+    auto left = [&] {
+        return r.grade_budget_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
 
     // The expected tests come from the trusted build, never from the submission's.
     std::vector<test_case_info> tests;
@@ -79,13 +109,14 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
         std::vector<const test_case_info*> mine;
         for (const test_case_info& t : tests)
             if (r.category_of(t) == &c) mine.push_back(&t);
-        for (const test_case_info* t : mine) {
+        const std::vector<long long> share = shares(c.points, mine.size());
+        for (std::size_t k = 0; k < mine.size(); ++k) {
             graded_item i;
-            i.name = t->name;
+            i.name = mine[k]->name;
             i.category = c.name;
             i.visibility = c.visibility;
-            i.tags = t->tags;
-            i.max_score = c.points / static_cast<double>(mine.size());
+            i.tags = mine[k]->tags;
+            i.max_units = share[k];
             g.items.push_back(i);
         }
         for (const rubric_scene& s : r.scenes) {
@@ -96,7 +127,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             i.category = c.name;
             i.visibility = s.visibility;
             i.tags = {"scene", s.file.filename().string()};
-            i.max_score = s.points;
+            i.max_units = std::llround(s.points * 1000);
             i.reference_image = in.reference_renders / stage.name / (s.file.stem().string() + ".png");
             if (!fs::exists(i.reference_image))
                 throw grader_error(i.reference_image.string() + " is missing: rebuild with tools/setup");
@@ -105,7 +136,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     }
 
     try {
-        const prepared_submission sub = prepare_submission(submission, stage, in, work / "scratch", caps);
+        const prepared_submission sub = prepare_submission(submission, stage, in, work / "submission", caps, left());
         g.origin = sub.origin;
         g.notes = sub.notes;
         if (!sub.kit_stages.empty()) {
@@ -114,19 +145,25 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             g.notes.push_back("the kit also holds your code for" + list +
                               "; graded here with the reference for every other stage");
         }
-        const build_outcome b = build_submission(sub, stage, in, work / "build", caps);
+        const build_outcome b = build_submission(sub, stage, in, work / "build", caps, {options.policy, left()});
         g.built = b.ok;
         g.items[0].seconds = b.seconds;
-        g.items[0].result = b.ok ? "passed" : "failed";
+        g.items[0].result = b.ok ? "passed" : b.refused ? "refused" : "failed";
         g.items[0].message = b.ok ? "" : b.errors;
         if (b.ok) {
             for (std::size_t k = 1; k < g.items.size(); ++k) {
                 graded_item& i = g.items[k];
+                if (left() < 1) {
+                    i.message = "not run: the time budget of this grade (" +
+                                std::to_string(static_cast<int>(r.grade_budget_seconds)) + " s) was spent";
+                    continue;
+                }
                 if (i.what == graded_item::kind::test) {
+                    run_limits limits = r.test_limits;
+                    limits.wall_seconds = std::min(limits.wall_seconds, left());
                     const test_outcome o = b.tests_program.empty()
                                                ? test_outcome{test_outcome::status::failed, "no test program", 0}
-                                               : run_test_case(b.tests_program, i.name, work / work_name("test", k),
-                                                               r.test_limits, caps);
+                                               : run_test_case(b.tests_program, i.name, limits, caps);
                     i.result = to_string(o.result);
                     i.message = o.message;
                     i.seconds = o.seconds;
@@ -134,15 +171,15 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     const rubric_scene& s = *std::find_if(r.scenes.begin(), r.scenes.end(), [&](const rubric_scene& x) {
                         return x.file.filename().string() == i.tags[1];
                     });
-                    const scene_outcome o = render_and_compare(b.render_program, s, i.reference_image,
-                                                               work / "renders", r.render_limits, caps);
+                    run_limits limits = r.render_limits;
+                    limits.wall_seconds = std::min(limits.wall_seconds, left());
+                    const scene_outcome o = render_and_compare(b.render_program, s, i.reference_image, renders, limits, caps);
                     i.result = o.matches ? "passed" : o.rendered ? "failed" : "crashed";
                     i.message = o.message;
                     i.seconds = o.seconds;
                     i.image = o.image;
                     i.difference_image = o.difference;
                 }
-                if (i.passed()) i.score = i.max_score;
             }
         }
     } catch (const submission_error& e) {
@@ -150,8 +187,10 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     }
     if (!g.built)
         for (std::size_t k = 1; k < g.items.size(); ++k)
-            g.items[k].message = "the submission did not build (see \"builds\")";
+            g.items[k].message = g.items[0].result == "refused" ? "not run: the code was refused (see \"builds\")"
+                                                                : "the submission did not build (see \"builds\")";
     add_up(g, r);
+    if (!options.keep_work) fs::remove_all(work, ec);
     g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return g;
 }

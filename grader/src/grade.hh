@@ -16,8 +16,9 @@ struct graded_item {
     enum class kind { build, test, scene } what = kind::test;
     std::string name, category, visibility;
     std::vector<std::string> tags;
-    double score = 0, max_score = 0;
-    std::string result = "not run";  ///< passed, failed, crashed, timed out, not run
+    long long max_units = 0;         ///< the item's share of the points, in thousandths of a point
+    double score = 0, max_score = 0; ///< points (max_units / 1000, or 0)
+    std::string result = "not run";  ///< passed, failed, crashed, timed out, refused, not run
     std::string message;
     double seconds = 0;
     std::filesystem::path image, reference_image, difference_image;  ///< scenes only
@@ -43,11 +44,14 @@ struct graded_submission {
 
 /// \brief Options of `grade`.
 struct grade_options {
-    std::filesystem::path out;  ///< results.json, report.html and work/ go here
+    std::filesystem::path out;    ///< results.json, report.html, renders/ and (while grading) work/ go here
+    bool weaker_sandbox = false;  ///< grade even where bubblewrap cannot run (the report says so)
+    bool policy = true;           ///< false only to test the sandbox alone (calibration)
+    bool keep_work = false;       ///< keep out/work/ (sources, objects, programs) for a look
 };
 
 /// Grades `submission` for `stage`. Problems of the submission become failed items;
-/// problems of the grader throw grader_error.
+/// problems of the grader throw grader_error, and then nothing scores the student.
 graded_submission grade(const installation& in, const stage_info& stage, const std::filesystem::path& submission,
                         const grade_options& options);
 

@@ -28,28 +28,43 @@ installation load_installation() {
     } catch (const toml::parse_error& e) {
         throw grader_error(file.string() + ": " + std::string(e.description()) + "; rebuild with tools/setup");
     }
-    auto str = [&](const char* key) { return t[key].value_or(std::string()); };
+    auto str = [&](const toml::table& from, const char* key) { return from[key].value_or(std::string()); };
+    auto list = [&](const toml::table& from, const char* key) {
+        std::vector<std::string> out;
+        if (const toml::array* a = from[key].as_array())
+            for (const toml::node& n : *a)
+                if (const auto v = n.value<std::string>(); v && !v->empty()) out.push_back(*v);
+        return out;
+    };
+    auto paths = [&](const toml::table& from, const char* key) {
+        std::vector<fs::path> out;
+        for (const std::string& s : list(from, key)) out.emplace_back(s);
+        return out;
+    };
     installation in;
-    in.source_dir = str("source_dir");
-    in.build_dir = str("build_dir");
-    in.grader_build_dir = str("grader_build_dir");
-    in.cmake = str("cmake");
-    in.make_program = str("make_program");
-    in.prebuilt = str("prebuilt");
-    in.reference_renderer = str("reference_renderer");
-    in.reference_renders = str("reference_renders");
-    in.generator = str("generator");
-    in.cxx_compiler = str("cxx_compiler");
-    in.compiler_launcher = str("compiler_launcher");
-    in.build_type = str("build_type");
+    in.source_dir = str(t, "source_dir");
+    in.build_dir = str(t, "build_dir");
+    in.grader_build_dir = str(t, "grader_build_dir");
+    in.reference_renderer = str(t, "reference_renderer");
+    in.reference_renders = str(t, "reference_renders");
+    in.cxx_compiler = str(t, "cxx_compiler");
+    in.cxx_flags = list(t, "cxx_flags");
+    in.link_flags = list(t, "link_flags");
+    in.system_libraries = list(t, "system_libraries");
+    in.framework_libraries = paths(t, "framework_libraries");
+    in.renderer_objects = paths(t, "renderer_objects");
+    in.catch_main = str(t, "catch_main");
+    in.build_type = str(t, "build_type");
     in.sanitized = t["sanitized"].value_or(false);
     if (const toml::table* stages = t["stages"].as_table()) {
         for (const auto& [key, value] : *stages) {
             const toml::table& s = *value.as_table();
             stage_info info;
             info.name = std::string(key.str());
-            info.number = s["number"].value_or(std::string());
-            info.trusted_tests = s["trusted_tests"].value_or(std::string());
+            info.number = str(s, "number");
+            info.trusted_tests = str(s, "trusted_tests");
+            info.reference_library = str(s, "reference_library");
+            info.hidden_objects = paths(s, "hidden_objects");
             in.stages[info.name] = info;
         }
     }

@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace vl::grader {
 
@@ -21,13 +22,21 @@ struct stage_info {
     std::string name;                    ///< "02-sphere"
     std::string number;                  ///< "02"
     std::filesystem::path trusted_tests; ///< hidden tests linked with the reference (empty: none)
+    std::filesystem::path reference_library;          ///< the stage's reference, a static library
+    std::vector<std::filesystem::path> hidden_objects;  ///< the hidden tests, compiled
 };
 
 /// \brief The grader's installation: the source tree, the main build and its parts.
 struct installation {
     std::filesystem::path source_dir, build_dir, grader_build_dir;
-    std::filesystem::path cmake, make_program, prebuilt, reference_renderer, reference_renders;
-    std::string generator, cxx_compiler, compiler_launcher, build_type;
+    std::filesystem::path reference_renderer, reference_renders;
+    /// How a submission is compiled and linked: the same compiler and code generation as
+    /// the prebuilt parts it is linked with.
+    std::filesystem::path cxx_compiler;
+    std::vector<std::string> cxx_flags, link_flags, system_libraries;
+    std::vector<std::filesystem::path> framework_libraries, renderer_objects;
+    std::filesystem::path catch_main;
+    std::string build_type;
     bool sanitized = false;             ///< built with AddressSanitizer (no address-space limit then)
     std::map<std::string, stage_info> stages;
 

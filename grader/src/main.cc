@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -60,6 +61,22 @@ std::string take_option(arguments& args, const std::string& flag) {
     return {};
 }
 
+/// Takes `--flag` out of `args`; whether it was there.
+bool take_flag(arguments& args, const std::string& flag) {
+    const auto at = std::find(args.begin(), args.end(), flag);
+    if (at == args.end()) return false;
+    args.erase(at);
+    return true;
+}
+
+/// The options every grading command takes.
+vl::grader::grade_options take_grade_options(arguments& args) {
+    vl::grader::grade_options o;
+    o.weaker_sandbox = take_flag(args, "--weaker-sandbox");
+    o.keep_work = take_flag(args, "--keep-work");
+    return o;
+}
+
 void expect_count(const arguments& args, std::size_t n) {
     for (const std::string& a : args)
         if (a.starts_with("--")) throw usage_error{"unknown option '" + a + "'"};
@@ -68,11 +85,17 @@ void expect_count(const arguments& args, std::size_t n) {
 
 /// Grades and writes results.json and report.html into `out`.
 vl::grader::graded_submission grade_into(const installation& in, const std::string& assignment,
-                                         const fs::path& submission, const fs::path& out) {
+                                         const fs::path& submission, const fs::path& out,
+                                         vl::grader::grade_options options) {
     const vl::grader::stage_info& stage = in.find_stage(assignment);
     if (!fs::exists(submission)) throw grader_error(submission.string() + ": no such file or folder");
-    fs::create_directories(out);
-    const vl::grader::graded_submission g = vl::grader::grade(in, stage, submission, {fs::absolute(out)});
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec || access(out.c_str(), W_OK | X_OK) != 0)
+        throw grader_error("cannot write results to " + out.string() + ": " +
+                           (ec ? ec.message() : std::string(std::strerror(errno))) + " (choose another --out)");
+    options.out = fs::absolute(out);
+    const vl::grader::graded_submission g = vl::grader::grade(in, stage, submission, options);
     vl::grader::write_results_json(g, out / "results.json");
     vl::grader::write_report_html(g, out / "report.html");
     return g;
@@ -80,9 +103,10 @@ vl::grader::graded_submission grade_into(const installation& in, const std::stri
 
 int grade_command(const installation& in, arguments args) {
     std::string out = take_option(args, "--out");
+    const auto options = take_grade_options(args);
     expect_count(args, 2);
     if (out.empty()) out = "grader-out/" + in.find_stage(args[0]).name + "-" + fs::path(args[1]).filename().string();
-    const auto g = grade_into(in, args[0], args[1], out);
+    const auto g = grade_into(in, args[0], args[1], out, options);
     vl::grader::print_summary(std::cout, g, out, vl::grader::stdout_wants_colour());
     return 0;
 }
@@ -92,6 +116,11 @@ struct calibration_case {
     std::string stage, name, description;
     fs::path submission, expected;
 };
+
+/// Where the calibration's patched copies go: one folder per case.
+fs::path patched_copy_dir(const installation& in, const calibration_case& c) {
+    return in.grader_build_dir / "calibration-sources" / c.stage / c.name;
+}
 
 // A planted bug is stored as a patch against the current reference (expected.toml:
 // `patch = "bug.patch"`), so it follows every change of the reference and can never go
@@ -110,24 +139,24 @@ fs::path find_on_path(const std::string& name) {
     throw grader_error("cannot find '" + name + "' on PATH (tools/setup installs it)");
 }
 
-fs::path apply_bug_patch(const installation& in, const calibration_case& c, const fs::path& patch_file) {
-    const fs::path dir = in.grader_build_dir / "calibration-sources" / c.stage / c.name;
+fs::path apply_bug_patch(const installation& in, const calibration_case& c, const fs::path& patch_file,
+                         const fs::path& base) {
+    const fs::path dir = patched_copy_dir(in, c);
     fs::remove_all(dir);
     fs::create_directories(dir);
-    for (const auto& e : fs::directory_iterator(in.source_dir / "reference" / c.stage))
+    for (const auto& e : fs::directory_iterator(base))
         if (e.is_regular_file()) fs::copy_file(e.path(), dir / e.path().filename());
     vl::grader::run_request rq;
     rq.argv = {find_on_path("patch").string(), "--batch", "--forward", "--silent", "-p1", "-d", dir.string(), "-i",
                fs::absolute(patch_file).string()};
-    rq.cwd = dir;
-    rq.output = dir.parent_path() / (c.name + ".patch.log");
-    rq.environment = vl::grader::child_environment(dir);
+    rq.cwd = dir.string();
+    rq.environment = vl::grader::child_environment(dir.string());
     rq.sandboxed = false;
     rq.limits.wall_seconds = 30;
     const auto r = vl::grader::run(rq, vl::grader::sandbox_capabilities{});
     if (!r.succeeded())
-        throw grader_error(patch_file.string() + ": the patch no longer applies to reference/" + c.stage + " (" +
-                           vl::grader::read_head(rq.output, 1000) +
+        throw grader_error(patch_file.string() + ": the patch no longer applies to " + base.string() + " (" +
+                           r.output_head(1000) +
                            "); plant the bug again in a copy of the current reference and remake the patch with "
                            "diff -u --label a/FILE --label b/FILE reference/" + c.stage + "/FILE COPY/FILE");
     return dir;
@@ -152,7 +181,11 @@ calibration_case read_case(const installation& in, const fs::path& dir) {
     c.description = t["description"].value_or(std::string());
     const std::string from = t["submission"].value_or(std::string());
     const std::string patch = t["patch"].value_or(std::string());
-    c.submission = !patch.empty() ? apply_bug_patch(in, c, dir / patch) : from.empty() ? dir : in.source_dir / from;
+    const std::string base = t["base"].value_or(std::string("reference"));
+    if (base != "reference" && base != "stubs")
+        throw grader_error(c.expected.string() + ": base must be \"reference\" or \"stubs\", not \"" + base + "\"");
+    const fs::path base_dir = in.source_dir / (base == "stubs" ? "assignments" : "reference") / c.stage;
+    c.submission = !patch.empty() ? apply_bug_patch(in, c, dir / patch, base_dir) : from.empty() ? dir : in.source_dir / from;
     return c;
 }
 
@@ -212,11 +245,20 @@ std::vector<std::string> gradescope_format_problems(const nlohmann::json& r) {
 /// Compares a grade with expected.toml: the score's range in percent, which categories
 /// must lose points (every other one must keep full marks), whether it built; and checks
 /// that results.json keeps to Gradescope's format.
-std::vector<std::string> check_expectations(const fs::path& results, const fs::path& expected) {
+std::vector<std::string> check_expectations(const fs::path& results, const fs::path& expected, bool sandbox_alone) {
     std::ifstream in(results);
     const nlohmann::json r = nlohmann::json::parse(in);
-    const toml::table t = toml::parse_file(expected.string());
+    const toml::table whole = toml::parse_file(expected.string());
+    // With the policy off, the [sandbox] table holds what must happen instead.
+    const toml::table empty;
+    const toml::table& t = sandbox_alone ? (whole["sandbox"].as_table() ? *whole["sandbox"].as_table() : empty) : whole;
     std::vector<std::string> problems = gradescope_format_problems(r);
+    if (const auto verdict = t["verdict"].value<std::string>()) {
+        bool found = false;
+        for (const auto& test : r["tests"])
+            if (test["output"].get<std::string>().find(*verdict) != std::string::npos) found = true;
+        if (!found) problems.push_back("no item's output says \"" + *verdict + "\"");
+    }
     const double score = r["score"], max = r["extra_data"]["max_score"];
     const double percent = max > 0 ? 100 * score / max : 0;
     if (const toml::array* range = t["score_percent"].as_array()) {
@@ -243,18 +285,21 @@ std::vector<std::string> check_expectations(const fs::path& results, const fs::p
 
 int calibrate_command(const installation& in, arguments args) {
     std::string out = take_option(args, "--out");
+    auto options = take_grade_options(args);
+    options.policy = !take_flag(args, "--no-policy");
     expect_count(args, 1);
     const calibration_case c = read_case(in, args[0]);
     if (out.empty()) out = (in.grader_build_dir / "calibration" / c.stage / c.name).string();
-    const auto g = grade_into(in, c.stage, c.submission, out);
+    const auto g = grade_into(in, c.stage, c.submission, out, options);
     vl::grader::print_summary(std::cout, g, out, false);
-    const auto problems = check_expectations(fs::path(out) / "results.json", c.expected);
+    const auto problems = check_expectations(fs::path(out) / "results.json", c.expected, !options.policy);
     for (const std::string& p : problems) std::cout << "CALIBRATION: " << c.stage << "/" << c.name << ": " << p << "\n";
     if (problems.empty()) std::cout << "calibration: " << c.stage << "/" << c.name << " as expected\n";
     return problems.empty() ? 0 : 1;
 }
 
-int demo_command(const installation& in, const arguments& args) {
+int demo_command(const installation& in, arguments args) {
+    const auto options = take_grade_options(args);
     expect_count(args, 0);
     const fs::path root = in.grader_build_dir / "demo";
     const bool colour = vl::grader::stdout_wants_colour();
@@ -268,7 +313,7 @@ int demo_command(const installation& in, const arguments& args) {
         std::cout << "grading " << c.stage << " " << c.name << (c.description.empty() ? "" : ": " + c.description)
                   << "\n" << std::flush;
         const fs::path out = root / c.stage / c.name;
-        const auto g = grade_into(in, c.stage, c.submission, out);
+        const auto g = grade_into(in, c.stage, c.submission, out, options);
         lines.push_back({c.stage + " " + c.name, g.score, g.max_score, out / "report.html"});
     }
     std::cout << "\n";
@@ -301,15 +346,16 @@ int list_command(const installation& in, const arguments& args) {
 const std::vector<command>& commands() {
     static const std::vector<command> table = {
         {"demo", "demo", "grade the bundled sample submissions and print where their reports are", demo_command},
-        {"grade", "grade ASSIGNMENT SUBMISSION [--out DIR]",
+        {"grade", "grade ASSIGNMENT SUBMISSION [--out DIR] [--weaker-sandbox] [--keep-work]",
          "grade one submission (a folder, a student kit, or a .zip/.tar.gz of one); writes DIR/results.json "
          "and DIR/report.html",
          grade_command},
         {"export-kit", "export-kit DIR", "write the student kit to DIR and DIR.tar.gz (no reference, no hidden tests)",
          export_kit_command},
         {"list", "list", "the assignments this build can grade", list_command},
-        {"calibrate", "calibrate CASE_DIR [--out DIR]",
-         "grade one calibration case (grader/tests/submissions/NN-name/CASE) and check it against its expected.toml",
+        {"calibrate", "calibrate CASE_DIR [--out DIR] [--no-policy]",
+         "grade one calibration or attack case (grader/tests/submissions/NN-name/CASE, grader/tests/adversarial/...) "
+         "and check it against its expected.toml; --no-policy tests the sandbox alone ([sandbox] in expected.toml)",
          calibrate_command},
     };
     return table;

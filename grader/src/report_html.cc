@@ -1,5 +1,7 @@
 #include "report_html.hh"
 
+#include "safe_files.hh"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -143,10 +145,6 @@ std::string report_html(const graded_submission& g) {
     return h.str();
 }
 
-void write_report_html(const graded_submission& g, const fs::path& file) {
-    std::ofstream out(file);
-    out << report_html(g);
-    if (!out) throw std::runtime_error("cannot write " + file.string());
-}
+void write_report_html(const graded_submission& g, const std::filesystem::path& file) { replace_file(file, report_html(g)); }
 
 }  // namespace vl::grader

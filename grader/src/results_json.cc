@@ -1,5 +1,7 @@
 #include "results_json.hh"
 
+#include "safe_files.hh"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -68,10 +70,6 @@ std::string results_json(const graded_submission& g) {
     return r.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-void write_results_json(const graded_submission& g, const std::filesystem::path& file) {
-    std::ofstream out(file);
-    out << results_json(g);
-    if (!out) throw std::runtime_error("cannot write " + file.string());
-}
+void write_results_json(const graded_submission& g, const std::filesystem::path& file) { replace_file(file, results_json(g)); }
 
 }  // namespace vl::grader

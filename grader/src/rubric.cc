@@ -79,11 +79,14 @@ rubric load_rubric(const fs::path& file, bool sanitized) {
         r.render_limits.wall_seconds = number(file, *l, "render_timeout_seconds", 60);
         const double mib = number(file, *l, "memory_mib", 1024);
         r.test_limits.memory_bytes = r.render_limits.memory_bytes = static_cast<std::uint64_t>(mib) << 20;
+        r.grade_budget_seconds = number(file, *l, "grade_budget_seconds", 600);
     }
+    r.render_limits.report_bytes = std::size_t{64} << 20;
     // The sanitizers' shadow memory and slower code need room.
     if (sanitized) {
         r.test_limits.wall_seconds *= 5;
         r.render_limits.wall_seconds *= 5;
+        r.grade_budget_seconds *= 5;
     }
     std::set<std::string> names;
     if (const toml::array* cats = t["category"].as_array()) {

@@ -36,6 +36,7 @@ struct rubric {
     std::filesystem::path file;
     std::string assignment, title, visibility = "after_published";
     run_limits test_limits, render_limits;
+    double grade_budget_seconds = 600;  ///< the whole grade; items left when it is spent are not run
     std::vector<rubric_category> categories;
     std::vector<rubric_scene> scenes;
 

@@ -8,15 +8,17 @@
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
-#include <fstream>
 #include <sstream>
-#include <thread>
+
+#include "install.hh"
 
 namespace vl::grader {
 
@@ -24,37 +26,63 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr int report_fd_number = 3;
+constexpr int status_fd_number = 4;  // bubblewrap's --json-status-fd
+constexpr int first_mount_fd = 5;
+
+/// `fd` moved to a number of 64 or more (close-on-exec), so that the child's dup2 onto
+/// 0..63 never overwrites a descriptor it has still to duplicate.
+int high_fd(int fd) {
+    if (fd < 0 || fd >= 64) return fd;
+    const int moved = fcntl(fd, F_DUPFD_CLOEXEC, 64);
+    close(fd);
+    return moved;
+}
+
 void set_limit(int resource, rlim_t value) {
     const rlimit r{value, value};
     setrlimit(resource, &r);
 }
 
-/// In the child, after fork: limits, user, then exec. Never returns.
-[[noreturn]] void exec_child(const run_request& rq, const sandbox_capabilities& caps, const std::vector<char*>& argv,
-                             const std::vector<char*>& env) {
-    if (rq.sandboxed) {
-        const run_limits& l = rq.limits;
-        const double cpu = l.cpu_seconds > 0 ? l.cpu_seconds : l.wall_seconds + 1;
-        set_limit(RLIMIT_CPU, static_cast<rlim_t>(cpu + 0.999));
-        if (caps.address_limit && l.memory_bytes > 0) set_limit(RLIMIT_AS, l.memory_bytes);
-        set_limit(RLIMIT_FSIZE, l.file_bytes);
-        set_limit(RLIMIT_NOFILE, 256);
-        set_limit(RLIMIT_CORE, 0);
-        if (caps.unprivileged) {
-            set_limit(RLIMIT_NPROC, static_cast<rlim_t>(l.processes));
-            if (setgroups(0, nullptr) != 0 || setgid(caps.gid) != 0 || setuid(caps.uid) != 0) {
-                std::fprintf(stderr, "sandbox: cannot drop privileges: %s\n", std::strerror(errno));
-                _exit(126);
-            }
-        }
+/// Writes `text` to stderr with write(2): the only output allowed between fork and exec.
+void child_says(const char* a, const char* b = "") {
+    (void)!write(2, a, std::strlen(a));
+    (void)!write(2, b, std::strlen(b));
+    (void)!write(2, "\n", 1);
+}
+
+const char* signal_name(int sig) {
+    switch (sig) {
+        case SIGSEGV: return "SIGSEGV (segmentation fault: a bad pointer or a stack overflow)";
+        case SIGABRT: return "SIGABRT (abort: a failed assert, an uncaught exception or memory exhausted)";
+        case SIGFPE: return "SIGFPE (arithmetic error, such as an integer division by zero)";
+        case SIGKILL: return "SIGKILL (killed: usually the memory limit)";
+        case SIGXCPU: return "SIGXCPU (the CPU time limit)";
+        case SIGXFSZ: return "SIGXFSZ (the file size limit)";
+        case SIGBUS: return "SIGBUS (bus error)";
+        case SIGILL: return "SIGILL (illegal instruction)";
+        case SIGSYS: return "SIGSYS (a forbidden system call)";
+        default: return strsignal(sig);
     }
-    if (chdir(rq.cwd.c_str()) != 0) {
-        std::fprintf(stderr, "sandbox: cannot enter %s: %s\n", rq.cwd.c_str(), std::strerror(errno));
-        _exit(126);
+}
+
+bool probe_run(const std::vector<std::string>& argv, bool as_nobody, const sandbox_capabilities& caps) {
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int null = open("/dev/null", O_RDWR);
+        dup2(null, 0);
+        dup2(null, 1);
+        dup2(null, 2);
+        if (as_nobody && (setgroups(0, nullptr) != 0 || setgid(caps.gid) != 0 || setuid(caps.uid) != 0)) _exit(126);
+        std::vector<char*> args;
+        for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        char* env[] = {nullptr};
+        execve(args[0], args.data(), env);
+        _exit(127);
     }
-    execve(argv[0], argv.data(), env.data());
-    std::fprintf(stderr, "sandbox: cannot run %s: %s\n", argv[0], std::strerror(errno));
-    _exit(127);
+    int status = 0;
+    return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 bool try_unshare_in_child(int flags) {
@@ -64,72 +92,96 @@ bool try_unshare_in_child(int flags) {
     return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-const char* signal_name(int sig) {
-    switch (sig) {
-        case SIGSEGV: return "SIGSEGV (segmentation fault: a bad pointer or a stack overflow)";
-        case SIGABRT: return "SIGABRT (abort: a failed assert or an uncaught exception)";
-        case SIGFPE: return "SIGFPE (arithmetic error, such as an integer division by zero)";
-        case SIGKILL: return "SIGKILL (killed: usually the memory limit)";
-        case SIGXCPU: return "SIGXCPU (the CPU time limit)";
-        case SIGXFSZ: return "SIGXFSZ (the file size limit)";
-        case SIGBUS: return "SIGBUS (bus error)";
-        case SIGILL: return "SIGILL (illegal instruction)";
-        default: return strsignal(sig);
-    }
+/// The system folders every sandbox gets, read-only: the toolchain and what it needs.
+void system_mounts(std::vector<std::string>& a) {
+    a.insert(a.end(), {"--ro-bind", "/usr", "/usr", "--symlink", "usr/bin", "/bin", "--symlink", "usr/sbin", "/sbin",
+                       "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64"});
+    for (const char* etc : {"/etc/ld.so.cache", "/etc/alternatives"})
+        if (fs::exists(etc)) a.insert(a.end(), {"--ro-bind", etc, etc});
 }
+
+/// `path` with a mount's inside prefix replaced by its host path (the weaker sandbox).
+std::string to_host(const std::string& path, const std::vector<mount>& mounts, const fs::path& scratch) {
+    auto under = [&](const std::string& prefix) {
+        return path == prefix || (path.starts_with(prefix) && path[prefix.size()] == '/');
+    };
+    for (const mount& m : mounts)
+        if (under(m.inside)) return m.host.string() + path.substr(m.inside.size());
+    if (under("/scratch")) return scratch.string() + path.substr(8);
+    return path;
+}
+
+std::atomic<unsigned> weak_scratch_counter{0};
 
 }  // namespace
 
 std::string sandbox_capabilities::summary() const {
-    std::string s = "timeouts; limits on CPU time, ";
+    std::string s;
+    if (mode == isolation::bubblewrap) {
+        s = "bubblewrap: only the toolchain and the step's own files mounted, read-only; a private size-capped "
+            "scratch; no network; own PID namespace; uid 65534 in its own user namespace without capabilities";
+        s += drop_to_nobody ? " (started as nobody)" : "";
+    } else {
+        s = "WEAKER SANDBOX (no bubblewrap here): the grader's own files are NOT hidden from student code";
+        s += network_isolated ? "; no network" : "; network NOT isolated";
+        s += pid_isolated ? "; own PID namespace" : "";
+    }
+    s += "; timeouts; limits on CPU time, ";
     s += address_limit ? "memory, " : "(not memory: sanitizer build), ";
-    s += "file size and open files";
-    s += unprivileged ? "; runs as an unprivileged user with a process limit" : "; same user as the grader (no process limit)";
-    s += network_isolated ? "; no network" : "; network NOT isolated (no namespaces here)";
-    s += pid_isolated ? "; own PID namespace" : "";
+    s += "file size, open files and processes; output captured and capped";
     return s;
 }
 
-sandbox_capabilities probe_sandbox(bool sanitized) {
+sandbox_capabilities probe_sandbox(bool sanitized, bool allow_weaker) {
     sandbox_capabilities c;
     c.address_limit = !sanitized;
-    c.network_isolated = try_unshare_in_child(CLONE_NEWNET);
-    c.pid_isolated = try_unshare_in_child(CLONE_NEWPID);
     if (geteuid() == 0) {
+        c.drop_to_nobody = true;
         if (const passwd* p = getpwnam("nobody")) {
-            c.unprivileged = true;
             c.uid = p->pw_uid;
             c.gid = p->pw_gid;
         }
     }
+    std::string why;
+    if (access(c.bwrap.c_str(), X_OK) != 0) {
+        why = c.bwrap.string() + " is missing (install the Debian package bubblewrap: tools/setup does)";
+    } else {
+        std::vector<std::string> argv = {c.bwrap.string(), "--unshare-all", "--unshare-user", "--disable-userns",
+                                         "--die-with-parent", "--new-session"};
+        system_mounts(argv);
+        argv.insert(argv.end(), {"--proc", "/proc", "--dev", "/dev", "--tmpfs", "/scratch", "/bin/true"});
+        if (!probe_run(argv, c.drop_to_nobody, c))
+            why = "bubblewrap cannot make its namespaces here (a container without unprivileged user "
+                  "namespaces? try: " + c.bwrap.string() + " --unshare-all --ro-bind /usr /usr /usr/bin/true)";
+    }
+    if (why.empty()) return c;
+    if (!allow_weaker)
+        throw grader_error(why + ". Without it student code could read the hidden tests and the reference. "
+                                 "To grade anyway with a weaker sandbox, add --weaker-sandbox; every report "
+                                 "will say so");
+    c.mode = isolation::weaker;
+    c.network_isolated = try_unshare_in_child(CLONE_NEWNET);
+    c.pid_isolated = try_unshare_in_child(CLONE_NEWPID);
     return c;
 }
 
-std::vector<std::string> child_environment(const fs::path& home, std::vector<std::string> extra) {
-    std::vector<std::string> env = {"PATH=/usr/local/bin:/usr/bin:/bin", "HOME=" + home.string(), "LANG=C.UTF-8"};
+std::vector<std::string> child_environment(const std::string& home, std::vector<std::string> extra) {
+    std::vector<std::string> env = {"PATH=/usr/bin:/bin", "HOME=" + home, "LANG=C.UTF-8", "TMPDIR=/tmp"};
     for (auto& e : extra) env.push_back(std::move(e));
     return env;
 }
 
-void give_to_sandbox(const fs::path& dir, const sandbox_capabilities& caps) {
-    if (!caps.unprivileged) return;
-    std::error_code ec;
-    if (lchown(dir.c_str(), caps.uid, caps.gid) != 0) return;
-    for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
-         it.increment(ec))
-        (void)lchown(it->path().c_str(), caps.uid, caps.gid);
-}
-
-std::string read_head(const fs::path& file, std::size_t max_bytes) {
-    std::ifstream in(file, std::ios::binary);
-    std::string s(max_bytes + 1, '\0');
-    in.read(s.data(), static_cast<std::streamsize>(s.size()));
-    s.resize(static_cast<std::size_t>(in.gcount()));
-    if (s.size() > max_bytes) {
-        s.resize(max_bytes);
-        s += "\n[... cut: more output than " + std::to_string(max_bytes) + " bytes]";
-    }
-    return s;
+void make_sandbox_dir(const fs::path& dir, const sandbox_capabilities& caps) {
+    if (mkdir(dir.c_str(), 0755) != 0)
+        throw grader_error("cannot make " + dir.string() + ": " + std::strerror(errno));
+    if (!caps.drop_to_nobody || caps.mode != isolation::bubblewrap) return;
+    const int fd = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    struct stat st {};
+    const bool ok = fd >= 0 && fstat(fd, &st) == 0 && S_ISDIR(st.st_mode) && st.st_nlink == 2 &&
+                    fchown(fd, caps.uid, caps.gid) == 0;
+    const int err = errno;
+    if (fd >= 0) close(fd);
+    if (!ok) throw grader_error("cannot hand " + dir.string() + " to the sandbox: " + std::strerror(err));
 }
 
 std::string run_result::describe(double timeout) const {
@@ -141,112 +193,233 @@ std::string run_result::describe(double timeout) const {
     return s.str();
 }
 
+std::string run_result::output_head(std::size_t max_bytes) const {
+    std::string s = output.substr(0, max_bytes);
+    if (output_bytes > s.size())
+        s += "\n[... " + std::to_string(output_bytes - s.size()) + " more bytes of output not shown]";
+    return s;
+}
+
 run_result run(const run_request& rq, const sandbox_capabilities& caps) {
     run_result result;
-    std::vector<std::string> args = rq.argv, env_strings = rq.environment;
+    const bool bwrap = rq.sandboxed && caps.mode == isolation::bubblewrap;
+    const bool weak = rq.sandboxed && !bwrap;
+    const run_limits& l = rq.limits;
+
+    // Everything the child needs is made before fork: after it, only async-signal-safe calls.
+    std::vector<int> mount_fds;
+    auto close_all = [&] {
+        for (int fd : mount_fds) close(fd);
+    };
+    std::vector<std::string> args;
+    std::string cwd = rq.cwd;
+    fs::path weak_scratch;
+    if (bwrap) {
+        args = {caps.bwrap.string(), "--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent",
+                "--new-session", "--uid", std::to_string(caps.uid), "--gid", std::to_string(caps.gid),
+                "--json-status-fd", std::to_string(status_fd_number), "--clearenv"};
+        system_mounts(args);
+        args.insert(args.end(), {"--proc", "/proc", "--dev", "/dev", "--size", std::to_string(l.scratch_bytes),
+                                 "--tmpfs", "/tmp", "--size", std::to_string(l.scratch_bytes), "--tmpfs", "/scratch"});
+        for (const mount& m : rq.mounts) {
+            const int fd = high_fd(open(m.host.c_str(), O_PATH | O_NOFOLLOW | O_CLOEXEC));
+            struct stat st {};
+            if (fd < 0 || fstat(fd, &st) != 0 || !(S_ISREG(st.st_mode) || S_ISDIR(st.st_mode))) {
+                const int err = errno;
+                if (fd >= 0) close(fd);
+                close_all();
+                result.error = "cannot mount " + m.host.string() + ": " +
+                               (fd < 0 ? std::strerror(err) : "not a regular file or folder");
+                return result;
+            }
+            mount_fds.push_back(fd);
+            args.insert(args.end(), {m.writable ? "--bind-fd" : "--ro-bind-fd",
+                                     std::to_string(first_mount_fd + static_cast<int>(mount_fds.size()) - 1), m.inside});
+        }
+        for (const auto& [target, link] : rq.symlinks) args.insert(args.end(), {"--symlink", target, link});
+        for (const std::string& e : rq.environment) {
+            const auto eq = e.find('=');
+            args.insert(args.end(), {"--setenv", e.substr(0, eq), e.substr(eq + 1)});
+        }
+        args.insert(args.end(), {"--chdir", rq.cwd, "--", "/usr/bin/prlimit",
+                                 "--nproc=" + std::to_string(l.processes), "--"});
+        args.insert(args.end(), rq.argv.begin(), rq.argv.end());
+    } else if (weak) {
+        weak_scratch = fs::temp_directory_path() /
+                       ("vl-grader-scratch-" + std::to_string(getpid()) + "-" + std::to_string(weak_scratch_counter++));
+        std::error_code ec;
+        fs::remove_all(weak_scratch, ec);
+        fs::create_directories(weak_scratch, ec);
+        for (const auto& [target, link] : rq.symlinks) {
+            const std::string t = target.starts_with("/proc/self/fd/") ? "/dev/fd/" + target.substr(14) : target;
+            fs::create_symlink(to_host(t, rq.mounts, weak_scratch), to_host(link, rq.mounts, weak_scratch), ec);
+        }
+        for (const std::string& a : rq.argv) args.push_back(to_host(a, rq.mounts, weak_scratch));
+        cwd = to_host(rq.cwd, rq.mounts, weak_scratch);
+    } else {
+        args = rq.argv;
+    }
     std::vector<char*> argv, env;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
+    std::vector<std::string> env_strings = bwrap ? std::vector<std::string>{} : rq.environment;
     for (auto& e : env_strings) env.push_back(e.data());
     env.push_back(nullptr);
 
-    const int out = open(rq.output.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (out < 0) {
-        result.error = "cannot create " + rq.output.string() + ": " + std::strerror(errno);
-        return result;
-    }
-    if (rq.sandboxed && caps.unprivileged) (void)fchown(out, caps.uid, caps.gid);
-    // The status pipe: the PID namespace's first process reports how the program ended.
-    int status_pipe[2];
-    if (pipe2(status_pipe, O_CLOEXEC) != 0) {
-        close(out);
+    int out_pipe[2] = {-1, -1}, report_pipe[2] = {-1, -1}, status_pipe[2] = {-1, -1};
+    auto close_pipes = [&] {
+        for (int fd : {out_pipe[0], out_pipe[1], report_pipe[0], report_pipe[1], status_pipe[0], status_pipe[1]})
+            if (fd >= 0) close(fd);
+    };
+    if (pipe2(out_pipe, O_CLOEXEC) != 0 || (rq.report_fd && pipe2(report_pipe, O_CLOEXEC) != 0) ||
+        (bwrap && pipe2(status_pipe, O_CLOEXEC) != 0)) {
         result.error = std::string("pipe: ") + std::strerror(errno);
+        close_pipes();
+        close_all();
         return result;
     }
-    const bool namespaces = rq.sandboxed && (caps.network_isolated || caps.pid_isolated);
+    for (int* fd : {&out_pipe[0], &out_pipe[1], &report_pipe[0], &report_pipe[1], &status_pipe[0], &status_pipe[1]})
+        *fd = high_fd(*fd);
+    const double cpu = l.cpu_seconds > 0 ? l.cpu_seconds : l.wall_seconds + 1;
+    const bool drop = bwrap && caps.drop_to_nobody;
+    // A program reopens its fd 3 as /dev/fd/3 (Catch2's -o, rt's out.png): as nobody, it may
+    // only if nobody owns the pipe.
+    if (drop && report_pipe[1] >= 0) (void)fchown(report_pipe[1], caps.uid, caps.gid);
     const auto start = std::chrono::steady_clock::now();
-    const pid_t leader = fork();
-    if (leader < 0) {
-        close(out);
+    const pid_t child = fork();
+    if (child < 0) {
         result.error = std::string("fork: ") + std::strerror(errno);
+        close_pipes();
+        close_all();
         return result;
     }
-    if (leader == 0) {
+    if (child == 0) {
         // Its own process group, so a timeout kills everything it started.
         setpgid(0, 0);
         prctl(PR_SET_PDEATHSIG, SIGKILL);
-        const int in = open("/dev/null", O_RDONLY);
-        dup2(in, 0);
-        dup2(out, 1);
-        dup2(out, 2);
-        close(status_pipe[0]);
-        if (!namespaces) exec_child(rq, caps, argv, env);
-        int flags = 0;
-        if (caps.network_isolated) flags |= CLONE_NEWNET;
-        if (caps.pid_isolated) flags |= CLONE_NEWPID;
-        if (unshare(flags) != 0) _exit(125);
-        // The next child is process 1 of the new namespace: when it ends, the kernel ends
-        // every process the program left behind. It only waits for the program.
-        const pid_t init = fork();
-        if (init == 0) {
-            const pid_t program = fork();
-            if (program == 0) {
-                close(status_pipe[1]);
-                exec_child(rq, caps, argv, env);
-            }
-            int status = 0;
-            while (waitpid(program, &status, 0) < 0 && errno == EINTR) {
-            }
-            (void)!write(status_pipe[1], &status, sizeof status);
-            _exit(0);
+        const int null = open("/dev/null", O_RDONLY);
+        dup2(null, 0);
+        dup2(out_pipe[1], 1);
+        dup2(out_pipe[1], 2);
+        if (report_pipe[1] >= 0) dup2(report_pipe[1], report_fd_number);
+        if (status_pipe[1] >= 0) dup2(status_pipe[1], status_fd_number);
+        for (std::size_t k = 0; k < mount_fds.size(); ++k) dup2(mount_fds[k], first_mount_fd + static_cast<int>(k));
+        if (rq.sandboxed) {
+            set_limit(RLIMIT_CPU, static_cast<rlim_t>(cpu + 0.999));
+            if (caps.address_limit && l.memory_bytes > 0) set_limit(RLIMIT_AS, l.memory_bytes);
+            set_limit(RLIMIT_FSIZE, l.file_bytes);
+            set_limit(RLIMIT_NOFILE, 256);
+            set_limit(RLIMIT_CORE, 0);
         }
-        int status = 0;
-        while (waitpid(init, &status, 0) < 0 && errno == EINTR) {
+        if (drop && (setgroups(0, nullptr) != 0 || setgid(caps.gid) != 0 || setuid(caps.uid) != 0)) {
+            child_says("sandbox: cannot become nobody: ", std::strerror(errno));
+            _exit(125);
         }
-        _exit(0);
+        if (weak) {
+            int flags = (caps.network_isolated ? CLONE_NEWNET : 0);
+            if (flags != 0 && unshare(flags) != 0) _exit(125);
+        }
+        if (chdir(cwd.c_str()) != 0 && !bwrap) {
+            child_says("sandbox: cannot enter the working folder: ", std::strerror(errno));
+            _exit(125);
+        }
+        execve(argv[0], argv.data(), env.data());
+        child_says("sandbox: cannot run the program: ", std::strerror(errno));
+        _exit(125);
     }
-    close(status_pipe[1]);
-    close(out);
-    setpgid(leader, leader);
+    close(out_pipe[1]);
+    out_pipe[1] = -1;
+    if (report_pipe[1] >= 0) close(report_pipe[1]), report_pipe[1] = -1;
+    if (status_pipe[1] >= 0) close(status_pipe[1]), status_pipe[1] = -1;
+    close_all();
+    setpgid(child, child);
 
-    const auto deadline = start + std::chrono::duration<double>(rq.limits.wall_seconds);
-    int status = 0;
-    for (;;) {
-        const pid_t done = waitpid(leader, &status, WNOHANG);
-        if (done == leader) break;
-        if (std::chrono::steady_clock::now() > deadline) {
+    // Read the pipes until every one is closed or the time is up.
+    const auto deadline = start + std::chrono::duration<double>(l.wall_seconds);
+    std::string status_json;
+    char buf[65536];
+    struct source {
+        int fd;
+        std::string* into;
+        std::size_t cap;
+    };
+    std::vector<source> open_sources = {{out_pipe[0], &result.output, l.output_bytes}};
+    if (report_pipe[0] >= 0) open_sources.push_back({report_pipe[0], &result.report, l.report_bytes});
+    if (status_pipe[0] >= 0) open_sources.push_back({status_pipe[0], &status_json, 1 << 16});
+    while (!open_sources.empty()) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
             result.timed_out = true;
-            kill(-leader, SIGKILL);
-            waitpid(leader, &status, 0);
             break;
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        std::vector<pollfd> p;
+        for (const source& s : open_sources) p.push_back({s.fd, POLLIN, 0});
+        const int n = poll(p.data(), p.size(), static_cast<int>(std::min<long long>(left.count(), 1000)));
+        if (n < 0 && errno != EINTR) break;
+        for (std::size_t k = p.size(); k-- > 0;) {
+            if (p[k].revents == 0) continue;
+            source& s = open_sources[k];
+            const ssize_t got = read(s.fd, buf, sizeof buf);
+            if (got <= 0) {
+                open_sources.erase(open_sources.begin() + static_cast<long>(k));
+                continue;
+            }
+            if (s.into == &result.output) result.output_bytes += static_cast<std::uint64_t>(got);
+            const std::size_t room = s.cap > s.into->size() ? s.cap - s.into->size() : 0;
+            s.into->append(buf, std::min(room, static_cast<std::size_t>(got)));
+            if (s.into == &result.report && static_cast<std::size_t>(got) > room) result.report_overflow = true;
+        }
+        if (result.report_overflow) break;
     }
-    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.started = true;
-    if (namespaces) {
-        int program_status = 0;
-        if (read(status_pipe[0], &program_status, sizeof program_status) == static_cast<ssize_t>(sizeof program_status)) {
-            status = program_status;
-        } else if (!result.timed_out) {
-            result.started = false;
-            result.error = "the sandbox could not start the program";
+    int status = 0;
+    if (result.timed_out || result.report_overflow) {
+        kill(-child, SIGKILL);
+        kill(child, SIGKILL);
+    } else {
+        // Every pipe is closed: the program has ended; give it the rest of its time to be reaped.
+        while (waitpid(child, &status, WNOHANG) == 0) {
+            if (std::chrono::steady_clock::now() > deadline) {
+                result.timed_out = true;
+                kill(-child, SIGKILL);
+                kill(child, SIGKILL);
+                break;
+            }
+            usleep(2000);
         }
     }
-    close(status_pipe[0]);
-    kill(-leader, SIGKILL);  // anything left in the group
-    if (result.timed_out) return result;
+    if (result.timed_out || result.report_overflow) waitpid(child, &status, 0);
+    kill(-child, SIGKILL);  // anything left in the group
+    close_pipes();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (weak) {
+        std::error_code ec;
+        fs::remove_all(weak_scratch, ec);
+    }
+    result.started = true;
+    if (result.timed_out || result.report_overflow) return result;
+
+    if (bwrap) {
+        // bubblewrap reports the program's exit as {"exit-code": N}; without that record the
+        // sandbox itself failed (a mount, the exec), which is the grader's problem.
+        const auto at = status_json.find("\"exit-code\"");
+        if (at == std::string::npos) {
+            result.started = false;
+            result.error = "the sandbox failed: " + result.output.substr(0, 600);
+            return result;
+        }
+        const int code = std::atoi(status_json.c_str() + status_json.find(':', at) + 1);
+        if (code > 128 && code < 128 + 65) result.signal = code - 128;
+        else result.exit_code = code;
+        return result;
+    }
     if (WIFEXITED(status)) {
         result.exit_code = WEXITSTATUS(status);
     } else if (WIFSIGNALED(status)) {
         result.signal = WTERMSIG(status);
     }
-    if (result.exit_code == 126 || result.exit_code == 127) {
-        const std::string head = read_head(rq.output, 400);
-        if (head.starts_with("sandbox: ")) {
-            result.started = false;
-            result.error = head.substr(9);
-        }
+    if (result.exit_code == 125 && result.output.starts_with("sandbox: ")) {
+        result.started = false;
+        result.error = result.output.substr(9, 600);
     }
     return result;
 }

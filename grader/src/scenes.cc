@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "image_compare.hh"
+#include "install.hh"
+#include "safe_files.hh"
 #include "vl/image_io.hh"
 
 namespace vl::grader {
@@ -36,25 +38,30 @@ vl::image difference_image(const vl::image& a, const vl::image& b) {
 }  // namespace
 
 scene_outcome render_and_compare(const fs::path& render_program, const rubric_scene& scene, const fs::path& reference,
-                                 const fs::path& work, const run_limits& limits, const sandbox_capabilities& caps) {
+                                 const fs::path& renders, const run_limits& limits, const sandbox_capabilities& caps) {
     scene_outcome o;
-    fs::create_directories(work);
-    give_to_sandbox(work, caps);
     const std::string stem = scene.file.stem().string();
-    o.image = work / (stem + ".png");
+    const std::string scene_inside = "/vl/scene/" + scene.file.filename().string();
     run_request rq;
-    rq.argv = {render_program.string(), scene.file.string(), "-o", o.image.string(), "--threads", "1"};
-    rq.cwd = work;
-    rq.output = work / (stem + ".log");
-    rq.environment = child_environment(work);
+    rq.mounts = {{render_program, "/vl/bin/render", false}, {scene.file, scene_inside, false}};
+    // The image goes to a pipe: out.png is a link to fd 3, so nothing is written to disk.
+    rq.symlinks = {{"/proc/self/fd/3", "/scratch/out.png"}};
+    rq.argv = {"/vl/bin/render", scene_inside, "-o", "/scratch/out.png", "--threads", "1"};
+    rq.environment = child_environment("/scratch");
     rq.limits = limits;
+    rq.report_fd = true;
     const run_result r = run(rq, caps);
     o.seconds = r.seconds;
-    if (!r.succeeded() || !fs::exists(o.image)) {
-        o.message = "the render " + r.describe(rq.limits.wall_seconds) + ":\n" + read_head(rq.output, 1500);
-        o.image.clear();
+    if (!r.started) throw grader_error("the sandbox could not run the renderer: " + r.error);
+    if (!r.succeeded() || r.report.empty() || r.report_overflow) {
+        o.message = "the render " + (r.report_overflow ? std::string("wrote an image larger than ") +
+                                                             std::to_string(limits.report_bytes >> 20) + " MiB"
+                                                       : r.describe(rq.limits.wall_seconds)) +
+                    ":\n" + r.output_head(1500);
         return o;
     }
+    o.image = renders / (stem + ".png");
+    write_new_file(o.image, r.report);
     try {
         const vl::image mine = read_image(o.image), theirs = read_image(reference);
         const image_difference d = compare_images(mine, theirs, scene.threshold_levels);
@@ -63,16 +70,17 @@ scene_outcome render_and_compare(const fs::path& render_program, const rubric_sc
             o.message = "the image has the wrong size: " + d.summary;
             return o;
         }
-        o.difference = work / (stem + ".difference.png");
+        o.difference = renders / (stem + ".difference.png");
         write_image(o.difference, difference_image(mine, theirs));
         o.matches = d.mean_abs <= scene.max_mean_difference && d.fraction_over <= scene.max_fraction_over;
         std::ostringstream s;
         s << d.summary << " (allowed: mean " << scene.max_mean_difference << ", "
           << 100 * scene.max_fraction_over << "% of pixels)";
         o.message = s.str();
-    } catch (const std::exception& e) {
+    } catch (const vl::image_error& e) {
         o.rendered = false;
         o.message = std::string("the render wrote an unreadable image: ") + e.what();
+        o.image.clear();
     }
     return o;
 }

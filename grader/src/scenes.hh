@@ -20,10 +20,10 @@ struct scene_outcome {
     double seconds = 0;
 };
 
-/// Renders `scene` with `render_program` (sandboxed) in `work` and compares the image
-/// with `reference`.
+/// Renders `scene` with `render_program` (sandboxed; the image comes back through a pipe),
+/// keeps the image in `renders` (a folder of the grader's) and compares it with `reference`.
 scene_outcome render_and_compare(const std::filesystem::path& render_program, const rubric_scene& scene,
-                                 const std::filesystem::path& reference, const std::filesystem::path& work,
+                                 const std::filesystem::path& reference, const std::filesystem::path& renders,
                                  const run_limits& limits, const sandbox_capabilities& caps);
 
 }  // namespace vl::grader

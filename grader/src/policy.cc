@@ -1,0 +1,350 @@
+#include "policy.hh"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <map>
+#include <sstream>
+#include <string_view>
+
+namespace vl::grader {
+
+namespace {
+
+constexpr const char* files = "opens or writes files";
+constexpr const char* ends = "ends the process";
+constexpr const char* spawns = "starts processes";
+constexpr const char* signals = "sends signals";
+constexpr const char* network = "uses the network";
+constexpr const char* loads = "loads code at run time";
+constexpr const char* maps = "maps memory";
+constexpr const char* syscalls = "makes raw system calls";
+constexpr const char* assembly = "uses inline assembly";
+constexpr const char* early = "runs code before main";
+constexpr const char* counters = "tampers with the intersection counters";
+constexpr const char* harness = "reaches into the test framework";
+constexpr const char* replaces = "replaces a symbol of the framework or the runtime";
+constexpr const char* environment = "changes the environment";
+
+/// C functions a piece never calls, by what calling them means.
+const std::map<std::string, const char*, std::less<>>& denied_functions() {
+    static const std::map<std::string, const char*, std::less<>> m = [] {
+        std::map<std::string, const char*, std::less<>> d;
+        auto add = [&](const char* reason, std::initializer_list<const char*> names) {
+            for (const char* n : names) d[n] = reason;
+        };
+        add(files, {"open", "open64", "openat", "openat64", "openat2", "creat", "creat64", "fopen", "fopen64",
+                    "freopen", "freopen64", "fdopen", "tmpfile", "tmpfile64", "mkstemp", "mkstemp64", "mkstemps",
+                    "mkostemp", "mkostemps", "mkdtemp", "tmpnam", "tempnam", "opendir", "fdopendir", "scandir",
+                    "name_to_handle_at", "open_by_handle_at", "write", "pwrite", "pwrite64", "writev", "pwritev",
+                    "pwritev2", "read", "pread", "pread64", "readv", "preadv", "preadv2", "sendfile", "sendfile64",
+                    "splice", "tee", "vmsplice", "copy_file_range", "truncate", "truncate64", "ftruncate",
+                    "ftruncate64", "fallocate", "posix_fallocate", "unlink", "unlinkat", "remove", "rename",
+                    "renameat", "renameat2", "mkdir", "mkdirat", "rmdir", "mknod", "mknodat", "mkfifo",
+                    "chmod", "fchmod", "fchmodat", "chown", "fchown", "lchown", "fchownat", "link", "linkat",
+                    "symlink", "symlinkat", "chdir", "fchdir", "chroot", "mount", "umount", "umount2", "dup",
+                    "dup2", "dup3", "fcntl", "fcntl64", "ioctl", "pipe", "pipe2", "close_range", "utime",
+                    "utimes", "utimensat", "futimens", "setxattr", "fsetxattr", "lsetxattr", "memfd_create",
+                    "inotify_init", "fanotify_init", "flock", "lockf"});
+        add(ends, {"exit", "_exit", "_Exit", "quick_exit", "at_quick_exit", "on_exit", "pthread_exit"});
+        add(spawns, {"fork", "vfork", "clone", "clone3", "__clone", "execve", "execv", "execvp", "execvpe", "execl",
+                     "execlp", "execle", "fexecve", "execveat", "posix_spawn", "posix_spawnp", "system", "popen",
+                     "pclose", "daemon", "setsid", "setpgid", "unshare", "setns"});
+        add(signals, {"kill", "killpg", "raise", "tgkill", "tkill", "pthread_kill", "pthread_sigqueue", "sigqueue",
+                      "signal", "sigaction", "sigset", "bsd_signal", "sysv_signal", "alarm", "setitimer",
+                      "timer_create", "sigprocmask", "pthread_sigmask"});
+        add(network, {"socket", "socketpair", "connect", "bind", "listen", "accept", "accept4", "send", "sendto",
+                      "sendmsg", "sendmmsg", "recv", "recvfrom", "recvmsg", "recvmmsg", "getaddrinfo",
+                      "gethostbyname", "shutdown", "setsockopt"});
+        add(loads, {"dlopen", "dlmopen", "dlsym", "dlvsym", "dladdr", "dlinfo"});
+        add(maps, {"mmap", "mmap64", "mprotect", "pkey_mprotect", "mremap", "munmap", "madvise", "mlock", "shmget",
+                   "shmat", "shm_open", "brk", "sbrk"});
+        add(syscalls, {"syscall", "ptrace", "prctl", "arch_prctl", "seccomp", "personality", "setrlimit",
+                       "prlimit", "prlimit64", "setuid", "seteuid", "setreuid", "setresuid", "setgid", "setegid",
+                       "setregid", "setresgid", "capset", "process_vm_readv", "process_vm_writev",
+                       "sched_setaffinity", "sched_setscheduler", "setpriority", "nice"});
+        add(environment, {"setenv", "putenv", "unsetenv", "clearenv"});
+        return d;
+    }();
+    return m;
+}
+
+/// C++ names a piece never uses: file streams and the file system, the test framework.
+const std::vector<std::pair<std::string_view, const char*>>& denied_prefixes() {
+    static const std::vector<std::pair<std::string_view, const char*>> p = {
+        {"std::basic_ifstream", files},  {"std::basic_ofstream", files},   {"std::basic_fstream", files},
+        {"std::basic_filebuf", files},   {"std::__basic_file", files},      {"std::filesystem::", files},
+        {"std::experimental::filesystem", files}, {"std::__cxx11::basic_ifstream", files},
+        {"Catch::", harness},            {"vl::clear_counts", counters},
+    };
+    return p;
+}
+
+/// The C name behind a fortified or internal alias: __open_2 -> open, __read_chk -> read.
+std::string plain_name(const std::string& name) {
+    std::string n = name;
+    if (const auto at = n.find('@'); at != std::string::npos) n.erase(at);
+    if (n.starts_with("__") && !n.starts_with("___")) {
+        if (n.ends_with("_chk")) return n.substr(2, n.size() - 6);
+        if (n.ends_with("_2")) return n.substr(2, n.size() - 4);
+    }
+    return n;
+}
+
+bool is_hex(std::string_view s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+}
+
+/// One `nm -A -P` line: "FILE: NAME TYPE [VALUE [SIZE]]"; NAME may hold spaces (-C).
+bool parse_nm_line(const std::string& line, std::string& file, std::string& name, char& type) {
+    const auto colon = line.find(": ");
+    if (colon == std::string::npos) return false;
+    file = line.substr(0, colon);
+    std::vector<std::string_view> words;
+    std::string_view rest(line);
+    rest.remove_prefix(colon + 2);
+    std::size_t end = rest.size();
+    // From the right: at most two hex numbers, then the one-letter type.
+    for (int k = 0; k < 3; ++k) {
+        const auto space = rest.rfind(' ', end - 1);
+        if (space == std::string_view::npos) return false;
+        const std::string_view word = rest.substr(space + 1, end - space - 1);
+        if (word.size() == 1 && std::isalpha(static_cast<unsigned char>(word[0]))) {
+            type = word[0];
+            name = std::string(rest.substr(0, space));
+            return true;
+        }
+        if (!is_hex(word)) return false;
+        end = space;
+    }
+    return false;
+}
+
+bool is_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+/// The source with string and character literals blanked, so words inside them are not code.
+std::string without_literals(const std::string& line, bool& in_raw, std::string& raw_end) {
+    std::string out = line;
+    std::size_t k = 0;
+    auto blank = [&](std::size_t from, std::size_t to) {
+        for (std::size_t j = from; j < to && j < out.size(); ++j) out[j] = ' ';
+    };
+    if (in_raw) {
+        const auto close = line.find(raw_end);
+        if (close == std::string::npos) return std::string(line.size(), ' ');
+        blank(0, close + raw_end.size());
+        k = close + raw_end.size();
+        in_raw = false;
+    }
+    while (k < line.size()) {
+        const char c = line[k];
+        if (c == 'R' && k + 1 < line.size() && line[k + 1] == '"' && (k == 0 || !is_identifier_char(line[k - 1]) ||
+                                                                     line[k - 1] == 'u' || line[k - 1] == 'U' ||
+                                                                     line[k - 1] == 'L' || line[k - 1] == '8')) {
+            const auto paren = line.find('(', k + 2);
+            if (paren == std::string::npos) break;
+            raw_end = ")" + line.substr(k + 2, paren - k - 2) + "\"";
+            const auto close = line.find(raw_end, paren);
+            if (close == std::string::npos) {
+                blank(k, line.size());
+                in_raw = true;
+                break;
+            }
+            blank(k, close + raw_end.size());
+            k = close + raw_end.size();
+        } else if (c == '"' || (c == '\'' && (k == 0 || !std::isxdigit(static_cast<unsigned char>(line[k - 1]))))) {
+            std::size_t j = k + 1;
+            while (j < line.size() && line[j] != c) j += line[j] == '\\' ? 2 : 1;
+            blank(k, j + 1);
+            k = j + 1;
+        } else {
+            ++k;
+        }
+    }
+    return out;
+}
+
+/// Words inside attribute brackets that make code run or link differently.
+const std::map<std::string, const char*, std::less<>>& denied_attribute_words() {
+    static const std::map<std::string, const char*, std::less<>> m = {
+        {"constructor", early}, {"destructor", early},  {"init_priority", early}, {"section", replaces},
+        {"alias", replaces},    {"weak", replaces},     {"weakref", replaces},    {"ifunc", replaces},
+        {"visibility", replaces}, {"symver", replaces}, {"naked", assembly},
+    };
+    return m;
+}
+
+/// Identifiers that are denied wherever they appear in a student's own code.
+const std::map<std::string, const char*, std::less<>>& denied_words() {
+    static const std::map<std::string, const char*, std::less<>> m = {
+        {"asm", assembly},          {"__asm", assembly},        {"__asm__", assembly},
+        {"thread_tallies", counters}, {"clear_counts", counters}, {"syscall", syscalls},
+        {"_fileno", files},         {"_IO_write_ptr", files},   {"_IO_buf_base", files},
+        {"__builtin_frame_address", harness}, {"__builtin_return_address", harness},
+        {"Catch", harness},
+    };
+    return m;
+}
+
+}  // namespace
+
+std::string policy_finding::describe() const {
+    std::string s = file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": uses '" + what + "' (" +
+                    reason + ")";
+    return s;
+}
+
+std::vector<std::pair<std::string, object_symbol>> parse_nm(const std::string& mangled, const std::string& demangled) {
+    std::vector<std::pair<std::string, object_symbol>> out;
+    std::istringstream a(mangled), b(demangled);
+    std::string la, lb;
+    while (std::getline(a, la)) {
+        if (!std::getline(b, lb)) lb = la;
+        std::string file, name, dfile, dname;
+        char type = '?', dtype = '?';
+        if (!parse_nm_line(la, file, name, type)) continue;
+        if (!parse_nm_line(lb, dfile, dname, dtype) || dfile != file) dname = name;
+        out.push_back({file, {name, dname, type}});
+    }
+    return out;
+}
+
+std::vector<policy_finding> check_symbols(const std::string& file, const std::vector<object_symbol>& symbols,
+                                          const std::set<std::string>& protected_symbols,
+                                          const std::set<std::string>& strong) {
+    std::vector<policy_finding> found;
+    std::set<std::string> seen;
+    auto add = [&](const object_symbol& s, const char* reason) {
+        if (seen.insert(s.demangled).second) found.push_back({file, 0, s.demangled, reason});
+    };
+    for (const object_symbol& s : symbols) {
+        const bool undefined = s.type == 'U' || s.type == 'w' || s.type == 'v';
+        const bool local = std::islower(static_cast<unsigned char>(s.type)) && !undefined && s.type != 'u' &&
+                           s.type != 'i';
+        if (undefined) {
+            const std::string plain = plain_name(s.name);
+            if (const auto d = denied_functions().find(plain); d != denied_functions().end()) {
+                add(s, d->second);
+                continue;
+            }
+            if (plain.starts_with("__libc_") || plain.starts_with("_IO_") || plain.starts_with("_dl_")) {
+                add(s, syscalls);
+                continue;
+            }
+            for (const auto& [prefix, reason] : denied_prefixes())
+                if (std::string_view(s.demangled).starts_with(prefix)) {
+                    add(s, reason);
+                    break;
+                }
+            continue;
+        }
+        if (local) continue;
+        // A global definition: it must not take the place of one the rest of the program has.
+        if (s.type == 'i') {
+            add(s, replaces);
+            continue;
+        }
+        if (s.name == "main" || s.name == "_start" || s.name == "_init" || s.name == "_fini") {
+            add(s, replaces);
+            continue;
+        }
+        if (!protected_symbols.contains(s.name)) continue;
+        const bool weak_here = s.type == 'W' || s.type == 'V' || s.type == 'u';
+        // Two weak copies of one inline function (from a shared header) are the normal case.
+        if (weak_here && !strong.contains(s.name)) continue;
+        add(s, replaces);
+    }
+    return found;
+}
+
+std::vector<policy_finding> check_preprocessed(const std::string& text, const std::string& student_prefix) {
+    std::vector<policy_finding> found;
+    std::set<std::pair<std::string, std::string>> seen;
+    std::istringstream in(text);
+    std::string line, file;
+    int number = 0;
+    bool mine = false, in_raw = false;
+    std::string raw_end;
+    int attribute_depth = 0;      // inside __attribute__((...)): parentheses still open
+    int bracket_attribute = 0;    // inside [[...]]
+    auto add = [&](const std::string& what, const char* reason) {
+        const std::string base = file.substr(file.rfind('/') + 1);
+        if (seen.insert({base, what}).second) found.push_back({base, number, what, reason});
+    };
+    while (std::getline(in, line)) {
+        // Line markers: # 12 "/submission/sphere.cc" 2
+        if (line.starts_with("# ") && line.size() > 2 && std::isdigit(static_cast<unsigned char>(line[2]))) {
+            const auto q1 = line.find('"'), q2 = line.rfind('"');
+            number = std::atoi(line.c_str() + 2) - 1;
+            if (q1 != std::string::npos && q2 > q1) {
+                file = line.substr(q1 + 1, q2 - q1 - 1);
+                mine = file.starts_with(student_prefix);
+            }
+            continue;
+        }
+        ++number;
+        if (!mine) continue;
+        if (line.starts_with("#pragma") || line.starts_with("# pragma")) {
+            for (const char* word : {"weak", "redefine_extname", "GCC poison", "push_macro"})
+                if (line.find(word) != std::string::npos) add("#pragma " + std::string(word), replaces);
+            continue;
+        }
+        const std::string code = without_literals(line, in_raw, raw_end);
+        std::size_t k = 0;
+        while (k < code.size()) {
+            const char c = code[k];
+            if (c == '[' && k + 1 < code.size() && code[k + 1] == '[') {
+                ++bracket_attribute;
+                k += 2;
+                continue;
+            }
+            if (c == ']' && k + 1 < code.size() && code[k + 1] == ']' && bracket_attribute > 0) {
+                --bracket_attribute;
+                k += 2;
+                continue;
+            }
+            if (attribute_depth > 0 && c == '(') ++attribute_depth;
+            if (attribute_depth > 0 && c == ')') --attribute_depth;
+            if (!is_identifier_char(c) || std::isdigit(static_cast<unsigned char>(c))) {
+                if (std::isdigit(static_cast<unsigned char>(c)))
+                    while (k < code.size() && is_identifier_char(code[k])) ++k;
+                else
+                    ++k;
+                continue;
+            }
+            std::size_t j = k;
+            while (j < code.size() && is_identifier_char(code[j])) ++j;
+            const std::string word = code.substr(k, j - k);
+            std::size_t after = j;
+            while (after < code.size() && code[after] == ' ') ++after;
+            const bool scope_follows = code.compare(after, 2, "::") == 0;
+            if (word == "__attribute__" || word == "__attribute") {
+                const auto open = code.find('(', j);
+                if (open != std::string::npos) {
+                    attribute_depth = 1;
+                    j = open + 1;
+                }
+            } else if (attribute_depth > 0 || bracket_attribute > 0) {
+                std::string bare = word;
+                if (bare.size() > 4 && bare.starts_with("__") && bare.ends_with("__")) bare = bare.substr(2, bare.size() - 4);
+                if (const auto d = denied_attribute_words().find(bare); d != denied_attribute_words().end())
+                    add("attribute " + bare, d->second);
+            }
+            if (const auto d = denied_words().find(word); d != denied_words().end() &&
+                                                          (word != "Catch" || scope_follows)) {
+                add(word, d->second);
+            }
+            // vl::detail is the framework's inside (the counters among it).
+            if (word == "vl" && scope_follows) {
+                std::size_t m = after + 2;
+                while (m < code.size() && code[m] == ' ') ++m;
+                if (code.compare(m, 6, "detail") == 0 && (m + 6 >= code.size() || !is_identifier_char(code[m + 6])))
+                    add("vl::detail", counters);
+            }
+            k = j;
+        }
+    }
+    return found;
+}
+
+}  // namespace vl::grader
