@@ -78,9 +78,9 @@ void collect_protected(const installation& in, const stage_info& stage, const st
     }
     for (const auto& out : {nm(argv), shared.size() > 6 ? nm(shared) : std::string()})
         for (const auto& [file, s] : parse_nm(out, out)) {
-            all.insert(s.name);
-            if (s.type != 'W' && s.type != 'V' && s.type != 'w' && s.type != 'v' && s.type != 'u')
-                strong.insert(s.name);
+            const std::string name = s.name.substr(0, s.name.find('@'));  // open@@GLIBC_2.2.5
+            all.insert(name);
+            if (s.type != 'W' && s.type != 'V' && s.type != 'w' && s.type != 'v' && s.type != 'u') strong.insert(name);
         }
 }
 
@@ -267,7 +267,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         }
         if (!found.empty()) {
             b.refused = true;
-            b.errors = "refused: your code does what stage code may not do, so none of it was run:\n";
+            b.errors = "your code does what stage code may not do, so none of it was run:\n";
             for (std::size_t k = 0; k < found.size() && k < 20; ++k) b.errors += "  " + found[k].describe() + "\n";
             if (found.size() > 20) b.errors += "  [... " + std::to_string(found.size() - 20) + " more]\n";
             b.errors += "A stage's pieces only compute: they do not open or write files, end the process, start "

@@ -162,6 +162,28 @@ fs::path apply_bug_patch(const installation& in, const calibration_case& c, cons
     return dir;
 }
 
+/// A case whose submission a script makes (an archive, a folder with links):
+/// `bash make.sh REPOSITORY OUT_DIR` leaves exactly one file or folder in OUT_DIR.
+calibration_case made_case(const installation& in, calibration_case c, const fs::path& script) {
+    const fs::path dir = patched_copy_dir(in, c);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    vl::grader::run_request rq;
+    rq.argv = {"/bin/bash", fs::absolute(script).string(), in.source_dir.string(), dir.string()};
+    rq.cwd = dir.string();
+    rq.environment = vl::grader::child_environment(dir.string());
+    rq.sandboxed = false;
+    rq.limits.wall_seconds = 300;
+    const auto r = vl::grader::run(rq, vl::grader::sandbox_capabilities{});
+    std::vector<fs::path> made;
+    for (const auto& e : fs::directory_iterator(dir)) made.push_back(e.path());
+    if (!r.succeeded() || made.size() != 1)
+        throw grader_error(script.string() + " did not make one submission in " + dir.string() + " (" +
+                           r.describe(300) + "): " + r.output_head(1000));
+    c.submission = made.front();
+    return c;
+}
+
 calibration_case read_case(const installation& in, const fs::path& dir) {
     calibration_case c;
     c.expected = dir / "expected.toml";
@@ -179,6 +201,8 @@ calibration_case read_case(const installation& in, const fs::path& dir) {
         throw grader_error(c.expected.string() + ": " + std::string(e.description()));
     }
     c.description = t["description"].value_or(std::string());
+    c.stage = t["stage"].value_or(c.stage);  // cases outside a stage's folder name their stage
+    if (const auto make = t["make"].value<std::string>()) return made_case(in, c, dir / *make);
     const std::string from = t["submission"].value_or(std::string());
     const std::string patch = t["patch"].value_or(std::string());
     const std::string base = t["base"].value_or(std::string("reference"));

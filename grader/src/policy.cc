@@ -100,9 +100,9 @@ bool parse_nm_line(const std::string& line, std::string& file, std::string& name
     const auto colon = line.find(": ");
     if (colon == std::string::npos) return false;
     file = line.substr(0, colon);
-    std::vector<std::string_view> words;
     std::string_view rest(line);
     rest.remove_prefix(colon + 2);
+    while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t' || rest.back() == '\r')) rest.remove_suffix(1);
     std::size_t end = rest.size();
     // From the right: at most two hex numbers, then the one-letter type.
     for (int k = 0; k < 3; ++k) {
@@ -189,8 +189,9 @@ const std::map<std::string, const char*, std::less<>>& denied_words() {
 }  // namespace
 
 std::string policy_finding::describe() const {
-    std::string s = file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": uses '" + what + "' (" +
-                    reason + ")";
+    const bool definition = std::string_view(reason) == replaces && line == 0;
+    std::string s = file + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+                    (definition ? ": defines '" : ": uses '") + what + "' (" + reason + ")";
     return s;
 }
 

@@ -49,13 +49,15 @@ src=/in/submission
 if [ -f "$src" ]; then
   mkdir /scratch/u && cd /scratch/u || exit 90
   case "$VL_ARCHIVE" in
-    zip) unzip -qq -n "$src" >/scratch/err 2>&1 ;;
-    *) tar -xf "$src" --no-same-owner --no-same-permissions >/scratch/err 2>&1 ;;
+    zip) unzip -qq -n "$src" >/tmp/err 2>&1 ;;
+    *) tar -xf "$src" --no-same-owner --no-same-permissions >/tmp/err 2>&1 ;;
   esac
   status=$?
-  if grep -q "No space left\|disk full\|write error" /scratch/err; then echo "VL-FULL"; exit 91; fi
-  if [ $status -ne 0 ]; then echo "VL-BROKEN"; head -c 600 /scratch/err; exit 92; fi
-  rm -f /scratch/err
+  if [ $status -ge 128 ] || grep -q "No space left\|disk full\|write error\|Wrote only" /tmp/err; then
+    echo "VL-FULL"; exit 91
+  fi
+  if [ $status -ne 0 ]; then echo "VL-BROKEN"; head -c 600 /tmp/err; exit 92; fi
+  rm -f /tmp/err
   src=/scratch/u
 fi
 cd "$src" || exit 90
@@ -164,7 +166,7 @@ prepared_submission prepare_submission(const fs::path& submission, const stage_i
     rq.report_fd = true;
     rq.limits.wall_seconds = std::min(60.0, wall_seconds);
     rq.limits.scratch_bytes = limits.unpacked_bytes;
-    rq.limits.file_bytes = limits.unpacked_bytes;
+    rq.limits.file_bytes = limits.unpacked_bytes + (1 << 20);  // the tmpfs fills first
     rq.limits.memory_bytes = std::uint64_t{1} << 30;
     rq.limits.report_bytes = limits.source_bytes * 4 + (1 << 20);
     const run_result r = run(rq, caps);
