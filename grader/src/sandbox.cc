@@ -6,6 +6,7 @@
 #include <pwd.h>
 #include <sched.h>
 #include <signal.h>
+#include <sys/mount.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -29,6 +30,10 @@ namespace {
 constexpr int report_fd_number = 3;
 constexpr int status_fd_number = 4;  // bubblewrap's --json-status-fd
 constexpr int first_mount_fd = 5;
+// As root, the mounts are first bound here, in a private mount namespace of the child, so
+// that bubblewrap, started as nobody, can reach them whatever folders (a 0700 mktemp -d)
+// lie above them on the host. The host sees only this empty folder.
+constexpr const char* staging_dir = "/run/vl-grader-mounts";
 
 /// `fd` moved to a number of 64 or more (close-on-exec), so that the child's dup2 onto
 /// 0..63 never overwrites a descriptor it has still to duplicate.
@@ -137,6 +142,8 @@ sandbox_capabilities probe_sandbox(bool sanitized, bool allow_weaker) {
     c.address_limit = !sanitized;
     if (geteuid() == 0) {
         c.drop_to_nobody = true;
+        if (mkdir(staging_dir, 0755) != 0 && errno != EEXIST)
+            throw grader_error(std::string("cannot make ") + staging_dir + ": " + std::strerror(errno));
         if (const passwd* p = getpwnam("nobody")) {
             c.uid = p->pw_uid;
             c.gid = p->pw_gid;
@@ -208,6 +215,8 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
 
     // Everything the child needs is made before fork: after it, only async-signal-safe calls.
     std::vector<int> mount_fds;
+    std::vector<bool> mount_is_dir;
+    std::vector<std::string> staged;  // as root: where each mount is attached first
     auto close_all = [&] {
         for (int fd : mount_fds) close(fd);
     };
@@ -233,8 +242,15 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
                 return result;
             }
             mount_fds.push_back(fd);
-            args.insert(args.end(), {m.writable ? "--bind-fd" : "--ro-bind-fd",
-                                     std::to_string(first_mount_fd + static_cast<int>(mount_fds.size()) - 1), m.inside});
+            mount_is_dir.push_back(S_ISDIR(st.st_mode));
+            if (caps.drop_to_nobody) {
+                staged.push_back(std::string(staging_dir) + "/" + std::to_string(staged.size()));
+                args.insert(args.end(), {m.writable ? "--bind" : "--ro-bind", staged.back(), m.inside});
+            } else {
+                args.insert(args.end(), {m.writable ? "--bind-fd" : "--ro-bind-fd",
+                                         std::to_string(first_mount_fd + static_cast<int>(mount_fds.size()) - 1),
+                                         m.inside});
+            }
         }
         for (const auto& [target, link] : rq.symlinks) args.insert(args.end(), {"--symlink", target, link});
         for (const std::string& e : rq.environment) {
@@ -303,13 +319,42 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         dup2(out_pipe[1], 2);
         if (report_pipe[1] >= 0) dup2(report_pipe[1], report_fd_number);
         if (status_pipe[1] >= 0) dup2(status_pipe[1], status_fd_number);
-        for (std::size_t k = 0; k < mount_fds.size(); ++k) dup2(mount_fds[k], first_mount_fd + static_cast<int>(k));
+        // bubblewrap closes the descriptors it binds; as root they are attached by open_tree
+        // below and never reach it (close-on-exec), so no host folder stays open inside.
+        if (!drop)
+            for (std::size_t k = 0; k < mount_fds.size(); ++k) dup2(mount_fds[k], first_mount_fd + static_cast<int>(k));
         if (rq.sandboxed) {
             set_limit(RLIMIT_CPU, static_cast<rlim_t>(cpu + 0.999));
             if (caps.address_limit && l.memory_bytes > 0) set_limit(RLIMIT_AS, l.memory_bytes);
             set_limit(RLIMIT_FSIZE, l.file_bytes);
             set_limit(RLIMIT_NOFILE, 256);
             set_limit(RLIMIT_CORE, 0);
+        }
+        if (drop && !staged.empty()) {
+            // Detached copies of the mounts first (a bind from another namespace is not
+            // allowed), then a private namespace in which they are attached under staging_dir.
+            int trees[64];
+            for (std::size_t k = 0; k < staged.size() && k < 64; ++k) {
+                trees[k] = open_tree(mount_fds[k], "", OPEN_TREE_CLONE | OPEN_TREE_CLOEXEC | AT_EMPTY_PATH);
+                if (trees[k] < 0) {
+                    child_says("sandbox: cannot stage a mount: ", std::strerror(errno));
+                    _exit(125);
+                }
+            }
+            if (staged.size() > 64 || unshare(CLONE_NEWNS) != 0 ||
+                ::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 ||
+                ::mount("tmpfs", staging_dir, "tmpfs", MS_NOSUID | MS_NODEV, "mode=0755,size=64k") != 0) {
+                child_says("sandbox: cannot stage the mounts: ", std::strerror(errno));
+                _exit(125);
+            }
+            for (std::size_t k = 0; k < staged.size(); ++k) {
+                const bool made = mount_is_dir[k] ? mkdir(staged[k].c_str(), 0755) == 0
+                                                  : close(open(staged[k].c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644)) == 0;
+                if (!made || move_mount(trees[k], "", AT_FDCWD, staged[k].c_str(), MOVE_MOUNT_F_EMPTY_PATH) != 0) {
+                    child_says("sandbox: cannot stage a mount: ", std::strerror(errno));
+                    _exit(125);
+                }
+            }
         }
         if (drop && (setgroups(0, nullptr) != 0 || setgid(caps.gid) != 0 || setuid(caps.uid) != 0)) {
             child_says("sandbox: cannot become nobody: ", std::strerror(errno));
@@ -323,6 +368,9 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
             child_says("sandbox: cannot enter the working folder: ", std::strerror(errno));
             _exit(125);
         }
+        // Nothing else the grader inherited or opened reaches the program.
+        const int keep = bwrap ? first_mount_fd + (drop ? 0 : static_cast<int>(mount_fds.size())) : report_fd_number + 1;
+        close_range(static_cast<unsigned>(keep), ~0U, 0);
         execve(argv[0], argv.data(), env.data());
         child_says("sandbox: cannot run the program: ", std::strerror(errno));
         _exit(125);

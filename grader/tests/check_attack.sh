@@ -24,7 +24,8 @@ manifest() {
   } | sort
 }
 
-before=$(mktemp -d)
+mkdir -p "$(dirname "$out")"
+before=$(mktemp -d -p "$(dirname "$out")")
 trap 'rm -rf "$before"' EXIT
 manifest >"$before/list"
 rm -rf "$out"
