@@ -49,15 +49,15 @@ src=/in/submission
 if [ -f "$src" ]; then
   mkdir /scratch/u && cd /scratch/u || exit 90
   case "$VL_ARCHIVE" in
-    zip) unzip -qq -n "$src" >/tmp/err 2>&1 ;;
-    *) tar -xf "$src" --no-same-owner --no-same-permissions >/tmp/err 2>&1 ;;
+    zip) unzip -qq -n "$src" >"$TMPDIR"/err 2>&1 ;;
+    *) tar -xf "$src" --no-same-owner --no-same-permissions >"$TMPDIR"/err 2>&1 ;;
   esac
   status=$?
-  if [ $status -ge 128 ] || grep -q "No space left\|disk full\|write error\|Wrote only" /tmp/err; then
+  if [ $status -ge 128 ] || grep -q "No space left\|disk full\|write error\|Wrote only" "$TMPDIR"/err; then
     echo "VL-FULL"; exit 91
   fi
-  if [ $status -ne 0 ]; then echo "VL-BROKEN"; head -c 600 /tmp/err; exit 92; fi
-  rm -f /tmp/err
+  if [ $status -ne 0 ]; then echo "VL-BROKEN"; head -c 600 "$TMPDIR"/err; exit 92; fi
+  rm -f "$TMPDIR"/err
   src=/scratch/u
 fi
 cd "$src" || exit 90
@@ -184,7 +184,10 @@ prepared_submission prepare_submission(const fs::path& submission, const stage_i
         throw submission_error(name + " holds more than " + megabytes(limits.source_bytes) +
                                " of source files: hand in only the folder assignments/" + stage.name);
     if (r.exit_code == 94 || r.exit_code == 90)
-        throw grader_error("could not read the files of " + submission.string() + ": " + r.output_head(600));
+        throw grader_error("could not read the files of " + submission.string() + ": " + r.output_head(600) +
+                           (caps.drop_to_nobody ? " (the sandbox reads a submission as the user nobody: make its files "
+                                                  "readable to all, e.g. chmod -R a+rX)"
+                                                : ""));
     if (!r.succeeded())
         throw submission_error("could not read " + name + " (" + r.describe(rq.limits.wall_seconds) + "): " +
                                r.output_head(600));

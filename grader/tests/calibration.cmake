@@ -18,6 +18,13 @@ foreach(case_dir IN LISTS calibration_cases)
   set_tests_properties("grader: ${stage} ${case_name}" PROPERTIES LABELS grader TIMEOUT 600)
 endforeach()
 
+# The grader's own failures are its own: an --out it cannot use, no bubblewrap; and a
+# fresh 0700 mktemp folder works for every stage.
+add_test(NAME "grader: its own failures exit non-zero and score no one, and any writable --out works"
+         COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/own_failures.sh $<TARGET_FILE:vl_grader> ${PROJECT_SOURCE_DIR})
+set_tests_properties("grader: its own failures exit non-zero and score no one, and any writable --out works"
+                     PROPERTIES LABELS grader TIMEOUT 900)
+
 # The student kit: export-kit refuses to write a kit in which any reference line or hidden
 # test name appears (find_leaks); this test also builds the kit as a student does, with the
 # stubs, and checks that its public tests run and fail. Not under the sanitizers: it is a
