@@ -3,10 +3,9 @@
 # The main build compiles, once, everything a submission's build can reuse: each stage's
 # reference as its own library, each stage's hidden tests and the renderer as object
 # files, the trusted test programs (hidden tests + reference) and the reference renders
-# of the hidden scenes. It then writes two files next to the grader:
-#   prebuilt.cmake  imported targets for grader/submission/CMakeLists.txt, the small
-#                   project that compiles only a submitted stage and links it with these;
-#   grader.toml     where everything is, for the grader program.
+# of the hidden scenes. It then writes grader.toml next to the grader: where everything
+# is, and how a submission is compiled and linked with these parts (the same compiler and
+# flags), which the grader mounts into each sandbox under neutral names.
 # Stages are found, not listed: a folder reference/NN-name with .cc files whose stage the
 # top level declared with vl_stage(NN name) is gradable; grader/hidden/NN-name adds its
 # hidden tests, scenes and rubric.
