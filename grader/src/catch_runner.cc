@@ -22,11 +22,15 @@ std::vector<std::string> split_tags(const std::string& tags) {
     return out;
 }
 
+/// `s` without surrounding space, and cut to 500 characters: values and exception
+/// messages come from student code, and a report is not a channel for bulk data.
 std::string trim(std::string s) {
     const auto first = s.find_first_not_of(" \t\n\r");
     if (first == std::string::npos) return {};
     const auto last = s.find_last_not_of(" \t\n\r");
-    return s.substr(first, last - first + 1);
+    s = s.substr(first, last - first + 1);
+    if (s.size() > 500) s = s.substr(0, 500) + " [... " + std::to_string(s.size() - 500) + " more characters]";
+    return s;
 }
 
 std::string where(const pugi::xml_node& n) {
