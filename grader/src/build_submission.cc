@@ -258,6 +258,10 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
             collect_protected(in, stage, parts, caps, protected_symbols, strong);
             std::map<std::string, std::vector<object_symbol>> per_file;
             for (auto& [file, s] : parse_nm(mangled.output, demangled.output)) per_file[file].push_back(s);
+            for (const auto& e : fs::directory_iterator(sub.sources))
+                for (policy_finding& p : check_raw_source(e.path().filename().string(),
+                                                          read_regular_file(e.path(), std::size_t{16} << 20)))
+                    found.push_back(p);
             for (const std::string& f : sub.files) {
                 const auto symbols = per_file["/in/" + stem_of(f) + ".o"];
                 for (policy_finding& p : check_symbols(f, symbols, protected_symbols, strong)) found.push_back(p);

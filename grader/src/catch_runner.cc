@@ -107,7 +107,9 @@ std::vector<test_case_info> list_trusted_tests(const fs::path& program, const fs
     std::string broken;
     for (const pugi::xpath_node& x : doc.select_nodes("//TestCase")) {
         const pugi::xml_node t = x.node();
-        tests.push_back({t.attribute("name").as_string(), split_tags(t.attribute("tags").as_string())});
+        tests.push_back({t.attribute("name").as_string(), split_tags(t.attribute("tags").as_string()),
+                         t.attribute("tags").as_string(), t.attribute("filename").as_string(),
+                         t.attribute("line").as_string()});
         if (!t.child("OverallResult").attribute("success").as_bool(false)) {
             std::string message;
             int count = 0;
@@ -122,8 +124,9 @@ std::vector<test_case_info> list_trusted_tests(const fs::path& program, const fs
     return tests;
 }
 
-test_outcome run_test_case(const fs::path& program, const std::string& name, const run_limits& limits,
+test_outcome run_test_case(const fs::path& program, const test_case_info& expected, const run_limits& limits,
                            const sandbox_capabilities& caps) {
+    const std::string& name = expected.name;
     run_request rq;
     rq.mounts = {{program, "/vl/bin/hidden_tests", false}};
     rq.argv = {"/vl/bin/hidden_tests", exact_test_spec(name), "-r", "xml", "-o", "/dev/fd/3"};
@@ -157,8 +160,11 @@ test_outcome run_test_case(const fs::path& program, const std::string& name, con
             if (x.node().attribute("name").as_string() == name) test = x.node();
         }
     }
+    const bool genuine = test && expected.raw_tags == test.attribute("tags").as_string() &&
+                         expected.file == test.attribute("filename").as_string() &&
+                         expected.line == test.attribute("line").as_string();
     const bool finished = parsed && test && test.child("OverallResult") &&
-                          doc.select_node("/*/OverallResults") && reported == 1;
+                          doc.select_node("/*/OverallResults") && reported == 1 && genuine;
     std::string message;
     int count = 0;
     if (test) collect_failures(test, message, count);
@@ -172,6 +178,8 @@ test_outcome run_test_case(const fs::path& program, const std::string& name, con
         if (r.signal != 0 || r.exit_code != 0)
             o.message = message + "the test program was " + r.describe(limits.wall_seconds) +
                         (finished ? "" : " before the test finished");
+        else if (test && !genuine)
+            o.message = message + "the report is not one Catch2 wrote for this test";
         else
             o.message = message + "the test program ended before the test finished";
     } else {

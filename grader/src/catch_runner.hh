@@ -14,6 +14,8 @@ namespace vl::grader {
 struct test_case_info {
     std::string name;
     std::vector<std::string> tags;  ///< without brackets: "02", "sphere", "hits"
+    std::string raw_tags;           ///< as Catch2 reports them: "[02][sphere][hits]"
+    std::string file, line;         ///< where the test is defined, as Catch2 reports it
 };
 
 /// \brief How one test case went.
@@ -33,7 +35,9 @@ std::vector<test_case_info> list_trusted_tests(const std::filesystem::path& prog
                                                const sandbox_capabilities& caps);
 
 /// Runs the test case `name` of `program` alone, in a sandbox of its own.
-test_outcome run_test_case(const std::filesystem::path& program, const std::string& name, const run_limits& limits,
+/// A report counts only when the test case in it is `test` as the trusted program knows it
+/// (the same name, tags, file and line: details a report forged from outside Catch2 lacks).
+test_outcome run_test_case(const std::filesystem::path& program, const test_case_info& test, const run_limits& limits,
                            const sandbox_capabilities& caps);
 
 /// A Catch2 test spec that matches exactly `name` (its special characters escaped).

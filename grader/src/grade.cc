@@ -117,6 +117,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             i.visibility = c.visibility;
             i.tags = mine[k]->tags;
             i.max_units = share[k];
+            i.test = *mine[k];
             g.items.push_back(i);
         }
         for (const rubric_scene& s : r.scenes) {
@@ -163,7 +164,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
                     const test_outcome o = b.tests_program.empty()
                                                ? test_outcome{test_outcome::status::failed, "no test program", 0}
-                                               : run_test_case(b.tests_program, i.name, limits, caps);
+                                               : run_test_case(b.tests_program, i.test, limits, caps);
                     i.result = to_string(o.result);
                     i.message = o.message;
                     i.seconds = o.seconds;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "catch_runner.hh"
 #include "install.hh"
 
 namespace vl::grader {
@@ -22,6 +23,7 @@ struct graded_item {
     std::string message;
     double seconds = 0;
     std::filesystem::path image, reference_image, difference_image;  ///< scenes only
+    test_case_info test;                                              ///< tests only: as the trusted program lists it
     bool passed() const { return result == "passed"; }
 };
 

@@ -45,7 +45,8 @@ const std::map<std::string, const char*, std::less<>>& denied_functions() {
                     "symlink", "symlinkat", "chdir", "fchdir", "chroot", "mount", "umount", "umount2", "dup",
                     "dup2", "dup3", "fcntl", "fcntl64", "ioctl", "pipe", "pipe2", "close_range", "utime",
                     "utimes", "utimensat", "futimens", "setxattr", "fsetxattr", "lsetxattr", "memfd_create",
-                    "inotify_init", "fanotify_init", "flock", "lockf"});
+                    "inotify_init", "fanotify_init", "flock", "lockf", "dprintf", "vdprintf", "aio_write", "aio_read",
+                    "lio_listio", "io_uring_setup", "fmemopen_fd"});
         add(ends, {"exit", "_exit", "_Exit", "quick_exit", "at_quick_exit", "on_exit", "pthread_exit"});
         add(spawns, {"fork", "vfork", "clone", "clone3", "__clone", "execve", "execv", "execvp", "execvpe", "execl",
                      "execlp", "execle", "fexecve", "execveat", "posix_spawn", "posix_spawnp", "system", "popen",
@@ -56,7 +57,8 @@ const std::map<std::string, const char*, std::less<>>& denied_functions() {
         add(network, {"socket", "socketpair", "connect", "bind", "listen", "accept", "accept4", "send", "sendto",
                       "sendmsg", "sendmmsg", "recv", "recvfrom", "recvmsg", "recvmmsg", "getaddrinfo",
                       "gethostbyname", "shutdown", "setsockopt"});
-        add(loads, {"dlopen", "dlmopen", "dlsym", "dlvsym", "dladdr", "dlinfo"});
+        add(loads, {"dlopen", "dlmopen", "dlsym", "dlvsym", "dladdr", "dladdr1", "dlinfo", "dl_iterate_phdr",
+                    "_r_debug", "_DYNAMIC", "getauxval", "__libc_stack_end", "_dl_argv"});
         add(maps, {"mmap", "mmap64", "mprotect", "pkey_mprotect", "mremap", "munmap", "madvise", "mlock", "shmget",
                    "shmat", "shm_open", "brk", "sbrk"});
         add(syscalls, {"syscall", "ptrace", "prctl", "arch_prctl", "seccomp", "personality", "setrlimit",
@@ -228,7 +230,8 @@ std::vector<policy_finding> check_symbols(const std::string& file, const std::ve
                 add(s, d->second);
                 continue;
             }
-            if (plain.starts_with("__libc_") || plain.starts_with("_IO_") || plain.starts_with("_dl_")) {
+            if (plain.starts_with("__libc_") || plain.starts_with("_IO_") || plain.starts_with("_dl_") ||
+                plain.ends_with("_nocancel") || plain.starts_with("__GI_")) {
                 add(s, syscalls);
                 continue;
             }
@@ -344,6 +347,23 @@ std::vector<policy_finding> check_preprocessed(const std::string& text, const st
             }
             k = j;
         }
+    }
+    return found;
+}
+
+std::vector<policy_finding> check_raw_source(const std::string& file, const std::string& text) {
+    std::vector<policy_finding> found;
+    std::istringstream in(text);
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++number;
+        std::size_t k = line.find_first_not_of(" \t");
+        if (k == std::string::npos || line[k] != '#') continue;
+        k = line.find_first_not_of(" \t", k + 1);
+        if (k == std::string::npos) continue;
+        const bool directive_line = line.compare(k, 4, "line") == 0 && (k + 4 == line.size() || !is_identifier_char(line[k + 4]));
+        if (directive_line || std::isdigit(static_cast<unsigned char>(line[k])))
+            found.push_back({file, number, "#line", "hides where its code comes from"});
     }
     return found;
 }

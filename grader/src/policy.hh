@@ -5,8 +5,9 @@
 /// (as the compiler saw it, preprocessed) is checked against this policy. Pieces do not
 /// open or write files, end the process, start processes, send signals, use the network,
 /// load code, map memory, make system calls, use inline assembly, run code before main,
-/// touch the intersection counters or the test framework, or replace a symbol that the
-/// framework, the tests or the runtime define. Printing to stdout and stderr is allowed.
+/// touch the intersection counters or the test framework, replace a symbol that the
+/// framework, the tests or the runtime define, or hide where their lines come from
+/// (`#line`). Printing to stdout and stderr is allowed.
 ///
 /// The sandbox would contain most of this anyway; the policy is what keeps a test's
 /// verdict honest, since the test and the student's code share one process.
@@ -46,5 +47,9 @@ std::vector<policy_finding> check_symbols(const std::string& file, const std::ve
 /// Checks a preprocessed source (`g++ -E` output): only the lines that come from the
 /// student's own files, those whose line markers name a path under `student_prefix`.
 std::vector<policy_finding> check_preprocessed(const std::string& text, const std::string& student_prefix);
+
+/// Checks a student's file as written: a `#line` directive would make the preprocessed
+/// text say its code comes from another file (a system header), out of check_preprocessed's sight.
+std::vector<policy_finding> check_raw_source(const std::string& file, const std::string& text);
 
 }  // namespace vl::grader
