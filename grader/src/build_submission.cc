@@ -76,16 +76,17 @@ void collect_protected(const installation& in, const stage_info& stage, const st
         path = path.substr(0, path.find(' '));
         if (path.starts_with("/") && is_regular(fs::canonical(path))) shared.push_back(path);
     }
-    // A weak copy of a shared library's function in the program is normal (an inline
-    // std::string member at -O0): only the prebuilt parts' strong definitions count as
-    // strong, so a student's inline body cannot take the place of a framework function.
+    // A weak copy of a shared library's C++ function in the program is normal (an inline
+    // std::string member at -O0); a weak C function (open, malloc) would interpose the
+    // runtime's, and a weak copy of a framework function defined out of line would take
+    // its place: those are `strong`.
     const std::string statics = nm(argv), shared_libs = shared.size() > 6 ? nm(shared) : std::string();
     for (const auto& [out, from_static] : {std::pair{&statics, true}, std::pair{&shared_libs, false}})
         for (const auto& [file, s] : parse_nm(*out, *out)) {
             const std::string name = s.name.substr(0, s.name.find('@'));  // open@@GLIBC_2.2.5
             all.insert(name);
-            if (from_static && s.type != 'W' && s.type != 'V' && s.type != 'w' && s.type != 'v' && s.type != 'u')
-                strong.insert(name);
+            const bool weak = s.type == 'W' || s.type == 'V' || s.type == 'w' || s.type == 'v' || s.type == 'u';
+            if (from_static ? !weak : !name.starts_with("_Z")) strong.insert(name);
         }
 }
 

@@ -78,7 +78,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     g.sandbox = caps.summary();
     if (!options.policy) g.sandbox += "; the source and symbol policy was OFF (a sandbox test)";
 
-    const rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.sanitized);
+    rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.sanitized);
+    if (options.budget_seconds > 0) r.grade_budget_seconds = options.budget_seconds;
     g.title = r.title;
     const fs::path work = options.out / "work", renders = options.out / "renders";
     std::error_code ec;

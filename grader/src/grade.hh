@@ -50,6 +50,7 @@ struct grade_options {
     bool weaker_sandbox = false;  ///< grade even where bubblewrap cannot run (the report says so)
     bool policy = true;           ///< false only to test the sandbox alone (calibration)
     bool keep_work = false;       ///< keep out/work/ (sources, objects, programs) for a look
+    double budget_seconds = 0;    ///< the whole grade's time; 0: the rubric's grade_budget_seconds
 };
 
 /// Grades `submission` for `stage`. Problems of the submission become failed items;

@@ -115,6 +115,7 @@ int grade_command(const installation& in, arguments args) {
 struct calibration_case {
     std::string stage, name, description;
     fs::path submission, expected;
+    double budget_seconds = 0;  ///< expected.toml's budget_seconds: a shorter grade budget than the rubric's
 };
 
 /// Where the calibration's patched copies go: one folder per case.
@@ -202,6 +203,7 @@ calibration_case read_case(const installation& in, const fs::path& dir) {
     }
     c.description = t["description"].value_or(std::string());
     c.stage = t["stage"].value_or(c.stage);  // cases outside a stage's folder name their stage
+    c.budget_seconds = t["budget_seconds"].value_or(0.0);
     if (const auto make = t["make"].value<std::string>()) return made_case(in, c, dir / *make);
     const std::string from = t["submission"].value_or(std::string());
     const std::string patch = t["patch"].value_or(std::string());
@@ -313,6 +315,7 @@ int calibrate_command(const installation& in, arguments args) {
     options.policy = !take_flag(args, "--no-policy");
     expect_count(args, 1);
     const calibration_case c = read_case(in, args[0]);
+    options.budget_seconds = c.budget_seconds;
     if (out.empty()) out = (in.grader_build_dir / "calibration" / c.stage / c.name).string();
     const auto g = grade_into(in, c.stage, c.submission, out, options);
     vl::grader::print_summary(std::cout, g, out, false);

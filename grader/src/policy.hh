@@ -39,7 +39,8 @@ std::vector<std::pair<std::string, object_symbol>> parse_nm(const std::string& m
 
 /// Checks one object's symbols. `protected_symbols` holds every global symbol that the
 /// prebuilt parts linked with it and the shared libraries define (the stage's own
-/// reference excluded); `strong` marks those defined there other than weakly.
+/// reference excluded); `strong` marks those that not even a weak definition may shadow:
+/// the prebuilt parts' strong definitions and the runtime's C functions (open, malloc).
 std::vector<policy_finding> check_symbols(const std::string& file, const std::vector<object_symbol>& symbols,
                                           const std::set<std::string>& protected_symbols,
                                           const std::set<std::string>& strong);
