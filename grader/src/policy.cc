@@ -237,7 +237,10 @@ std::vector<policy_finding> check_symbols(const std::string& file, const std::ve
             }
             for (const auto& [prefix, reason] : denied_prefixes())
                 if (std::string_view(s.demangled).starts_with(prefix)) {
-                    add(s, reason);
+                    // Named by the class or namespace, not by each of its members.
+                    std::string what(prefix);
+                    if (what.ends_with("::")) what.resize(what.size() - 2);
+                    add({s.name, what, s.type}, reason);
                     break;
                 }
             continue;

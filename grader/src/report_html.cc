@@ -119,7 +119,9 @@ std::string report_html(const graded_submission& g) {
 
     const graded_item& build = g.items.front();
     h << "<h2>Build " << badge(build.result) << "</h2>\n";
-    if (!build.passed()) h << "<p>The first errors:</p><pre>" << escape(build.message) << "</pre>\n";
+    if (!build.passed())
+        h << (build.result == "refused" ? "<p>Why it was refused:</p><pre>" : "<p>The first errors:</p><pre>")
+          << escape(build.message) << "</pre>\n";
     else h << "<p>Built in " << points(build.seconds) << " s, with the reference for every other stage.</p>\n";
 
     for (const category_total& c : g.categories) {

@@ -19,7 +19,10 @@ double tidy(double x) { return std::round(x * 1e4) / 1e4; }
 std::string summary_text(const graded_submission& g) {
     std::string s = g.title + ": " + std::to_string(static_cast<int>(std::lround(g.score))) + " of " +
                     std::to_string(static_cast<int>(std::lround(g.max_score))) + " points.\n";
-    if (!g.built) s += "Your code did not build: see the test \"builds\" for the compiler's first errors.\n";
+    if (!g.built && !g.items.empty() && g.items.front().result == "refused")
+        s += "Your code was refused, so none of it ran: see the test \"builds\" for what it may not do.\n";
+    else if (!g.built)
+        s += "Your code did not build: see the test \"builds\" for the compiler's first errors.\n";
     for (const category_total& c : g.categories)
         s += "  " + c.title + ": " + std::to_string(c.passed) + " of " + std::to_string(c.items) + " passed\n";
     for (const std::string& n : g.notes) s += "Note: " + n + "\n";

@@ -1,5 +1,7 @@
 #include "terminal_summary.hh"
 
+#include <sstream>
+
 #include <unistd.h>
 
 #include <cmath>
@@ -38,7 +40,18 @@ void print_summary(std::ostream& s, const graded_submission& g, const std::files
     s << "  score " << tint(g.score, g.max_score) << bold << fixed(g.score) << " / " << fixed(g.max_score) << reset
       << " (" << (g.max_score > 0 ? std::lround(100 * g.score / g.max_score) : 0) << "%)  " << dim << "in "
       << fixed(g.seconds) << " s" << reset << "\n";
-    if (!g.built) s << "  " << red << "did not build:" << reset << " " << first_line(g.items.front().message) << "\n";
+    if (!g.built) {
+        const bool refused = g.items.front().result == "refused";
+        s << "  " << red << (refused ? "refused:" : "did not build:") << reset << " " << first_line(g.items.front().message)
+          << "\n";
+        if (refused) {
+            // The reasons, one per line, as the report gives them.
+            std::istringstream lines(g.items.front().message);
+            std::string line;
+            std::getline(lines, line);
+            for (int k = 0; k < 5 && std::getline(lines, line) && line.starts_with("  "); ++k) s << "  " << line << "\n";
+        }
+    }
     for (const category_total& c : g.categories)
         s << "  " << tint(c.score, c.max_score) << fixed(c.score) << " / " << fixed(c.max_score) << reset << "  "
           << c.title << dim << "  (" << c.passed << " of " << c.items << " passed)" << reset << "\n";
