@@ -145,6 +145,142 @@ std::string explain_link_errors(const std::string& log) {
     return out;
 }
 
+compile_outcome compile_sources(const installation& in, const stage_info& stage, const fs::path& sources,
+                                const fs::path& contract, const std::vector<std::string>& files, const fs::path& objects,
+                                const sandbox_capabilities& caps, cache_use cache, double wall_seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    auto left = [&] {
+        return wall_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    std::vector<std::string> flags = in.cxx_flags;
+    // At most 50 errors: a file that floods the compiler's output stops early.
+    flags.insert(flags.end(), {"-std=c++20", "-pipe", "-fdiagnostics-color=never", "-fmax-errors=50", "-Wall",
+                               "-Wextra", "-ffile-prefix-map=/submission/=assignments/" + stage.name + "/"});
+    std::vector<mount> mounts = {{sources, "/submission", false},
+                                 {contract, "/vl/contract", false},
+                                 {in.source_dir / "framework" / "include", "/vl/framework", false},
+                                 {objects, "/out", true}};
+    // The compile cache: only trusted sources write to it (seed_compile_cache); a
+    // submission's compiles read it, so files identical to the reference or the stubs
+    // (headers included) compile once.
+    const fs::path cache_dir = in.grader_build_dir / "compile-cache";
+    std::vector<std::string> cache_env;
+    const bool cached = cache != cache_use::none && fs::is_directory(cache_dir);
+    if (cached) {
+        mounts.push_back({cache_dir, "/vl/ccache", cache == cache_use::write});
+        cache_env = {"CCACHE_DIR=/vl/ccache", "CCACHE_TEMPDIR=/tmp", "CCACHE_NOHASHDIR=1", "CCACHE_MAXSIZE=2G",
+                     "CCACHE_UMASK=022"};
+        if (cache == cache_use::read_only) cache_env.push_back("CCACHE_READONLY=1");
+    }
+    compile_outcome outcome;
+    std::vector<std::string> failures(files.size());
+    std::size_t next = 0;
+    std::mutex m;
+    auto worker = [&] {
+        for (;;) {
+            std::size_t k;
+            {
+                std::lock_guard lock(m);
+                if (next >= files.size()) return;
+                k = next++;
+            }
+            const std::string& file = files[k];
+            const std::string stem = stem_of(file);
+            run_request rq;
+            rq.mounts = mounts;
+            rq.environment = child_environment("/scratch", cache_env);
+            rq.limits.memory_bytes = std::uint64_t{4} << 30;
+            rq.limits.file_bytes = std::uint64_t{256} << 20;
+            rq.limits.scratch_bytes = std::uint64_t{256} << 20;
+            rq.limits.processes = 16;
+            rq.argv = {in.cxx_compiler.string()};
+            rq.argv.insert(rq.argv.end(), flags.begin(), flags.end());
+            rq.argv.insert(rq.argv.end(), {"-I/vl/contract", "-I/submission", "-I/vl/framework", "-E",
+                                           "/submission/" + file, "-o", "/out/" + stem + ".ii"});
+            rq.limits.wall_seconds = std::max(1.0, std::min(30.0, left()));
+            run_result r = run(rq, caps);
+            if (r.succeeded()) {
+                rq.argv = cached ? std::vector<std::string>{"/usr/bin/ccache", in.cxx_compiler.string()}
+                                 : std::vector<std::string>{in.cxx_compiler.string()};
+                rq.argv.insert(rq.argv.end(), flags.begin(), flags.end());
+                rq.argv.insert(rq.argv.end(), {"-c", "/out/" + stem + ".ii", "-o", "/out/" + stem + ".o"});
+                rq.limits.wall_seconds = std::max(1.0, std::min(90.0, left()));
+                r = run(rq, caps);
+            }
+            std::lock_guard lock(m);
+            if (!r.started) outcome.grader_failure = r.error;
+            if (!r.succeeded()) {
+                failures[k] = (r.timed_out || r.signal != 0
+                                   ? file + ": the compiler " + r.describe(rq.limits.wall_seconds) +
+                                         (r.signal == SIGXFSZ ? " (its output grew past 256 MiB)" : "") + "\n"
+                                   : std::string()) +
+                              trim_compiler_errors(r.output);
+            }
+        }
+    };
+    {
+        std::vector<std::jthread> workers;
+        for (int t = 0; t < 2; ++t) workers.emplace_back(worker);
+    }
+    if (!outcome.grader_failure.empty())
+        throw grader_error("the sandbox could not run the compiler: " + outcome.grader_failure);
+    for (const std::string& f : failures) outcome.errors += f;
+    return outcome;
+}
+
+void seed_compile_cache(const installation& in, const stage_info& stage, const fs::path& work,
+                        const sandbox_capabilities& caps) {
+    const fs::path cache_dir = in.grader_build_dir / "compile-cache";
+    std::error_code ec;
+    if (!fs::is_directory(cache_dir)) {
+        try {
+            make_sandbox_dir(cache_dir, caps);
+        } catch (const grader_error&) {
+            return;  // no cache: every file compiles, which is slower, never wrong
+        }
+    }
+    // The stamp names what was compiled into the cache: the sources' sizes and times and
+    // the compiler's flags. The same stamp: nothing to do.
+    std::string stamp;
+    for (const auto& flag : in.cxx_flags) stamp += flag + " ";
+    stamp += "\n";
+    std::vector<fs::path> dirs = {in.source_dir / "reference" / stage.name, in.assignment_dir(stage)};
+    for (const auto& [name, s] : in.stages) dirs.push_back(in.assignment_dir(s));
+    dirs.push_back(in.source_dir / "framework" / "include" / "vl");
+    for (const fs::path& d : dirs)
+        for (const auto& e : fs::directory_iterator(d, ec))
+            if (e.is_regular_file())
+                stamp += e.path().string() + " " + std::to_string(e.file_size()) + " " +
+                         std::to_string(e.last_write_time().time_since_epoch().count()) + "\n";
+    const fs::path stamp_file = cache_dir.parent_path() / ("compile-cache-" + stage.number + ".stamp");
+    if (read_regular_file(stamp_file, 1 << 20) == stamp) return;
+
+    fs::create_directories(work / "contract");
+    for (const auto& [name, s] : in.stages)
+        for (const auto& e : fs::directory_iterator(in.assignment_dir(s)))
+            if (e.is_regular_file() && e.path().extension() == ".hh")
+                fs::copy_file(e.path(), work / "contract" / e.path().filename(), fs::copy_options::overwrite_existing);
+    int k = 0;
+    for (const fs::path& from : {in.source_dir / "reference" / stage.name, in.assignment_dir(stage)}) {
+        const fs::path sources = work / ("sources" + std::to_string(k)), objects = work / ("objects" + std::to_string(k));
+        ++k;
+        fs::create_directories(sources);
+        std::vector<std::string> files;
+        for (const auto& e : fs::directory_iterator(from))
+            if (e.is_regular_file() && (e.path().extension() == ".cc" || e.path().extension() == ".hh")) {
+                if (fs::exists(work / "contract" / e.path().filename())) continue;
+                fs::copy_file(e.path(), sources / e.path().filename());
+                if (e.path().extension() == ".cc") files.push_back(e.path().filename().string());
+            }
+        std::sort(files.begin(), files.end());
+        make_sandbox_dir(objects, caps);
+        const compile_outcome o = compile_sources(in, stage, sources, work / "contract", files, objects, caps,
+                                                  cache_use::write, 600);
+        if (!o.errors.empty()) return;  // the stubs or the reference do not compile: tests will say so
+    }
+    replace_file(stamp_file, stamp);
+}
+
 build_outcome build_submission(const prepared_submission& sub, const stage_info& stage, const installation& in,
                                const fs::path& work, const sandbox_capabilities& caps, const build_options& options) {
     build_outcome b;
@@ -159,69 +295,11 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     make_sandbox_dir(bin, caps);
 
     // 1. Preprocess and compile each file, two at a time.
-    std::vector<std::string> flags = in.cxx_flags;
-    flags.insert(flags.end(), {"-std=c++20", "-pipe", "-fdiagnostics-color=never", "-Wall", "-Wextra",
-                               "-ffile-prefix-map=/submission/=assignments/" + stage.name + "/"});
-    const std::vector<mount> compile_mounts = {{sub.sources, "/submission", false},
-                                               {sub.contract, "/vl/contract", false},
-                                               {in.source_dir / "framework" / "include", "/vl/framework", false},
-                                               {objects, "/out", true}};
-    std::vector<std::string> failures(sub.files.size());
-    std::vector<bool> ok(sub.files.size(), false);
-    std::size_t next = 0;
-    std::mutex m;
-    std::string grader_failure;
-    auto worker = [&] {
-        for (;;) {
-            std::size_t k;
-            {
-                std::lock_guard lock(m);
-                if (next >= sub.files.size()) return;
-                k = next++;
-            }
-            const std::string& file = sub.files[k];
-            const std::string stem = stem_of(file);
-            run_request rq;
-            rq.mounts = compile_mounts;
-            rq.environment = child_environment("/scratch");
-            rq.limits.memory_bytes = std::uint64_t{4} << 30;
-            rq.limits.file_bytes = std::uint64_t{256} << 20;
-            rq.limits.scratch_bytes = std::uint64_t{256} << 20;
-            rq.limits.processes = 16;
-            rq.argv = {in.cxx_compiler.string()};
-            rq.argv.insert(rq.argv.end(), flags.begin(), flags.end());
-            rq.argv.insert(rq.argv.end(), {"-I/vl/contract", "-I/submission", "-I/vl/framework", "-E",
-                                           "/submission/" + file, "-o", "/out/" + stem + ".ii"});
-            rq.limits.wall_seconds = std::max(1.0, std::min(60.0, left()));
-            run_result r = run(rq, caps);
-            if (r.succeeded()) {
-                rq.argv = {in.cxx_compiler.string()};
-                rq.argv.insert(rq.argv.end(), flags.begin(), flags.end());
-                rq.argv.insert(rq.argv.end(), {"-c", "/out/" + stem + ".ii", "-o", "/out/" + stem + ".o"});
-                rq.limits.wall_seconds = std::max(1.0, std::min(180.0, left()));
-                r = run(rq, caps);
-            }
-            std::lock_guard lock(m);
-            if (!r.started) grader_failure = r.error;
-            ok[k] = r.succeeded();
-            if (!ok[k]) {
-                failures[k] = (r.timed_out || r.signal != 0 ? file + ": the compiler " + r.describe(rq.limits.wall_seconds) +
-                                                                  (r.signal == SIGXFSZ ? " (its output grew past 256 MiB)" : "") + "\n"
-                                                            : std::string()) +
-                              trim_compiler_errors(r.output);
-            }
-        }
-    };
-    {
-        std::vector<std::jthread> workers;
-        for (int t = 0; t < 2; ++t) workers.emplace_back(worker);
-    }
-    if (!grader_failure.empty()) throw grader_error("the sandbox could not run the compiler: " + grader_failure);
+    const compile_outcome compiled = compile_sources(in, stage, sub.sources, sub.contract, sub.files, objects, caps,
+                                                     cache_use::read_only, left());
     b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    for (std::size_t k = 0; k < sub.files.size(); ++k)
-        if (!ok[k]) b.errors += failures[k];
-    if (!b.errors.empty()) {
-        b.errors = trim_compiler_errors(b.errors, 40);
+    if (!compiled.errors.empty()) {
+        b.errors = trim_compiler_errors(compiled.errors, 40);
         return b;
     }
 

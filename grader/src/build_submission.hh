@@ -8,6 +8,7 @@
 /// programs: hidden_tests and render.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "install.hh"
 #include "sandbox.hh"
@@ -30,6 +31,28 @@ struct build_options {
     bool policy = true;           ///< false only to test the sandbox alone (calibration)
     double wall_seconds = 600;    ///< what is left of the grade's time
 };
+
+/// \brief How a compile uses the grader's compile cache (ccache, in the build tree).
+enum class cache_use { none, read_only, write };
+
+/// \brief What compiling a set of files gave.
+struct compile_outcome {
+    std::string errors;          ///< the compiler's messages for the files that failed
+    std::string grader_failure;  ///< the sandbox could not run the compiler
+};
+
+/// Preprocesses and compiles `files` of `sources` (with the contracts of `contract`) into
+/// `objects` (made by make_sandbox_dir), each in its own sandbox, two at a time. Only
+/// seed_compile_cache writes to the cache; a submission reads it.
+compile_outcome compile_sources(const installation& in, const stage_info& stage, const std::filesystem::path& sources,
+                                const std::filesystem::path& contract, const std::vector<std::string>& files,
+                                const std::filesystem::path& objects, const sandbox_capabilities& caps, cache_use cache,
+                                double wall_seconds);
+
+/// Compiles the stage's reference and stubs (trusted sources) into the compile cache, when
+/// they or the framework's headers changed since the last time; `work` is a scratch folder.
+void seed_compile_cache(const installation& in, const stage_info& stage, const std::filesystem::path& work,
+                        const sandbox_capabilities& caps);
 
 /// Compiles, checks and links `sub` in `work` (a fresh folder of the grader's).
 build_outcome build_submission(const prepared_submission& sub, const stage_info& stage, const installation& in,

@@ -147,6 +147,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             g.notes.push_back("the kit also holds your code for" + list +
                               "; graded here with the reference for every other stage");
         }
+        seed_compile_cache(in, stage, work / "seed", caps);
         const build_outcome b = build_submission(sub, stage, in, work / "build", caps, {options.policy, left()});
         g.built = b.ok;
         g.items[0].seconds = b.seconds;
