@@ -153,8 +153,10 @@ compile_outcome compile_sources(const installation& in, const stage_info& stage,
         return wall_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     std::vector<std::string> flags = in.cxx_flags;
-    // At most 50 errors: a file that floods the compiler's output stops early.
-    flags.insert(flags.end(), {"-std=c++20", "-pipe", "-fdiagnostics-color=never", "-fmax-errors=50", "-Wall",
+    // At most 50 errors, and constexpr evaluation cut at 10^8 operations (GCC's default,
+    // 2^33, runs for minutes): a file that floods or stalls the compiler stops early.
+    flags.insert(flags.end(), {"-std=c++20", "-pipe", "-fdiagnostics-color=never", "-fmax-errors=50",
+                               "-fconstexpr-ops-limit=100000000", "-Wall",
                                "-Wextra", "-ffile-prefix-map=/submission/=assignments/" + stage.name + "/"});
     std::vector<mount> mounts = {{sources, "/submission", false},
                                  {contract, "/vl/contract", false},
@@ -204,7 +206,7 @@ compile_outcome compile_sources(const installation& in, const stage_info& stage,
                                  : std::vector<std::string>{in.cxx_compiler.string()};
                 rq.argv.insert(rq.argv.end(), flags.begin(), flags.end());
                 rq.argv.insert(rq.argv.end(), {"-c", "/out/" + stem + ".ii", "-o", "/out/" + stem + ".o"});
-                rq.limits.wall_seconds = std::max(1.0, std::min(90.0, left()));
+                rq.limits.wall_seconds = std::max(1.0, std::min(60.0, left()));
                 r = run(rq, caps);
             }
             std::lock_guard lock(m);

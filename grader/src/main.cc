@@ -116,11 +116,12 @@ struct calibration_case {
     std::string stage, name, description;
     fs::path submission, expected;
     double budget_seconds = 0;  ///< expected.toml's budget_seconds: a shorter grade budget than the rubric's
+    std::string variant;        ///< "-sandbox" when graded with the policy off (its own patched copy)
 };
 
-/// Where the calibration's patched copies go: one folder per case.
+/// Where the calibration's patched copies go: one folder per case and variant.
 fs::path patched_copy_dir(const installation& in, const calibration_case& c) {
-    return in.grader_build_dir / "calibration-sources" / c.stage / c.name;
+    return in.grader_build_dir / "calibration-sources" / c.stage / (c.name + c.variant);
 }
 
 // A planted bug is stored as a patch against the current reference (expected.toml:
@@ -185,8 +186,9 @@ calibration_case made_case(const installation& in, calibration_case c, const fs:
     return c;
 }
 
-calibration_case read_case(const installation& in, const fs::path& dir) {
+calibration_case read_case(const installation& in, const fs::path& dir, const std::string& variant = "") {
     calibration_case c;
+    c.variant = variant;
     c.expected = dir / "expected.toml";
     c.stage = fs::absolute(dir).lexically_normal().parent_path().filename().string();
     c.name = fs::absolute(dir).lexically_normal().filename().string();
@@ -314,7 +316,7 @@ int calibrate_command(const installation& in, arguments args) {
     auto options = take_grade_options(args);
     options.policy = !take_flag(args, "--no-policy");
     expect_count(args, 1);
-    const calibration_case c = read_case(in, args[0]);
+    const calibration_case c = read_case(in, args[0], options.policy ? "" : "-sandbox");
     options.budget_seconds = c.budget_seconds;
     if (out.empty()) out = (in.grader_build_dir / "calibration" / c.stage / c.name).string();
     const auto g = grade_into(in, c.stage, c.submission, out, options);
