@@ -355,18 +355,83 @@ std::vector<policy_finding> check_preprocessed(const std::string& text, const st
 }
 
 std::vector<policy_finding> check_raw_source(const std::string& file, const std::string& text) {
+    // Translation phases 2 and 3, as far as directives need them: backslash-newlines are
+    // spliced, comments are whitespace, literals are skipped, and `%:` is `#`. A directive is
+    // a `#` first on a logical line; `#line` and a GNU line marker (`# 12 "file" 1`) are refused.
     std::vector<policy_finding> found;
-    std::istringstream in(text);
-    int number = 0;
-    for (std::string line; std::getline(in, line);) {
-        ++number;
-        std::size_t k = line.find_first_not_of(" \t");
-        if (k == std::string::npos || line[k] != '#') continue;
-        k = line.find_first_not_of(" \t", k + 1);
-        if (k == std::string::npos) continue;
-        const bool directive_line = line.compare(k, 4, "line") == 0 && (k + 4 == line.size() || !is_identifier_char(line[k + 4]));
-        if (directive_line || std::isdigit(static_cast<unsigned char>(line[k])))
-            found.push_back({file, number, "#line", "hides where its code comes from"});
+    std::string t;       // the text with splices removed
+    std::vector<int> at;  // the physical line of each character of t
+    int line = 1;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        if (text[k] == '\\') {
+            std::size_t j = k + 1;
+            while (j < text.size() && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r')) ++j;
+            if (j < text.size() && text[j] == '\n') {
+                k = j;
+                ++line;
+                continue;
+            }
+        }
+        t += text[k];
+        at.push_back(line);
+        if (text[k] == '\n') ++line;
+    }
+    bool line_start = true;
+    std::size_t k = 0;
+    auto skip_blank = [&](bool newlines) {
+        for (;;) {
+            if (k < t.size() && (t[k] == ' ' || t[k] == '\t' || t[k] == '\r' || t[k] == '\f' || t[k] == '\v' ||
+                                 (newlines && t[k] == '\n'))) {
+                ++k;
+            } else if (t.compare(k, 2, "/*") == 0) {
+                const auto end = t.find("*/", k + 2);
+                k = end == std::string::npos ? t.size() : end + 2;
+            } else {
+                return;
+            }
+        }
+    };
+    while (k < t.size()) {
+        if (line_start) {
+            skip_blank(false);
+            line_start = false;
+            if (k < t.size() && (t[k] == '#' || t.compare(k, 2, "%:") == 0)) {
+                const int where = at[k];
+                k += t[k] == '#' ? 1 : 2;
+                skip_blank(false);
+                std::size_t j = k;
+                while (j < t.size() && is_identifier_char(t[j])) ++j;
+                const std::string word = t.substr(k, j - k);
+                if (word == "line" || (!word.empty() && std::isdigit(static_cast<unsigned char>(word[0]))))
+                    found.push_back({file, where, "#line", "hides where its code comes from"});
+                k = j;
+            }
+            continue;
+        }
+        const char c = t[k];
+        if (c == '\n') {
+            line_start = true;
+            ++k;
+        } else if (t.compare(k, 2, "//") == 0) {
+            while (k < t.size() && t[k] != '\n') ++k;
+        } else if (t.compare(k, 2, "/*") == 0) {
+            const auto end = t.find("*/", k + 2);
+            k = end == std::string::npos ? t.size() : end + 2;
+        } else if (c == 'R' && t.compare(k + 1, 1, "\"") == 0 && (k == 0 || !is_identifier_char(t[k - 1]) ||
+                                                                  t[k - 1] == 'u' || t[k - 1] == 'U' ||
+                                                                  t[k - 1] == 'L' || t[k - 1] == '8')) {
+            const auto paren = t.find('(', k + 2);
+            if (paren == std::string::npos) break;
+            const std::string close = ")" + t.substr(k + 2, paren - k - 2) + "\"";
+            const auto end = t.find(close, paren);
+            k = end == std::string::npos ? t.size() : end + close.size();
+        } else if (c == '"' || (c == '\'' && (k == 0 || !std::isxdigit(static_cast<unsigned char>(t[k - 1]))))) {
+            std::size_t j = k + 1;
+            while (j < t.size() && t[j] != c && t[j] != '\n') j += t[j] == '\\' ? 2 : 1;
+            k = j + 1;
+        } else {
+            ++k;
+        }
     }
     return found;
 }

@@ -147,3 +147,15 @@ TEST_CASE("policy: a #line directive in a student's file is refused", "[grader][
     CHECK(found[1].line == 3);
     CHECK(found[0].reason == "hides where its code comes from");
 }
+
+TEST_CASE("policy: a #line spelled with a comment, a digraph or a splice is still refused", "[grader][policy]") {
+    CHECK(check_raw_source("a.cc", "#/**/line 1 \"x.h\"\n").size() == 1);
+    CHECK(check_raw_source("a.cc", "%:line 1 \"x.h\"\n").size() == 1);
+    CHECK(check_raw_source("a.cc", "#\\\nline 1 \"x.h\"\n").size() == 1);
+    CHECK(check_raw_source("a.cc", "  /* c */ # /* d */ 7 \"x.h\" 3 4\n").size() == 1);
+    // not directives: in a comment, in a string, in a raw string, after code on a line
+    CHECK(check_raw_source("a.cc", "// #line 1\n/*\n#line 2\n*/\n").empty());
+    CHECK(check_raw_source("a.cc", "const char* s = \"#line\";\nauto r = R\"(\n#line 3\n)\";\n").empty());
+    CHECK(check_raw_source("a.cc", "int a; # line\n").empty());
+    CHECK(check_raw_source("a.cc", "#include <cmath>\n#define LINE 1\n#if 1\n#endif\n").empty());
+}
