@@ -145,6 +145,17 @@ std::string explain_link_errors(const std::string& log) {
     return out;
 }
 
+/// The flags of every compile of a stage's code: the main build's code generation, plus
+/// at most 50 errors and constexpr evaluation cut at 10^8 operations (GCC's default, 2^33,
+/// runs for minutes), so a file that floods or stalls the compiler stops early.
+std::vector<std::string> compile_flags(const installation& in, const stage_info& stage) {
+    std::vector<std::string> flags = in.cxx_flags;
+    flags.insert(flags.end(), {"-std=c++20", "-pipe", "-fdiagnostics-color=never", "-fmax-errors=50",
+                               "-fconstexpr-ops-limit=100000000", "-Wall", "-Wextra",
+                               "-ffile-prefix-map=/submission/=assignments/" + stage.name + "/"});
+    return flags;
+}
+
 compile_outcome compile_sources(const installation& in, const stage_info& stage, const fs::path& sources,
                                 const fs::path& contract, const std::vector<std::string>& files, const fs::path& objects,
                                 const sandbox_capabilities& caps, cache_use cache, double wall_seconds) {
@@ -152,12 +163,7 @@ compile_outcome compile_sources(const installation& in, const stage_info& stage,
     auto left = [&] {
         return wall_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
-    std::vector<std::string> flags = in.cxx_flags;
-    // At most 50 errors, and constexpr evaluation cut at 10^8 operations (GCC's default,
-    // 2^33, runs for minutes): a file that floods or stalls the compiler stops early.
-    flags.insert(flags.end(), {"-std=c++20", "-pipe", "-fdiagnostics-color=never", "-fmax-errors=50",
-                               "-fconstexpr-ops-limit=100000000", "-Wall",
-                               "-Wextra", "-ffile-prefix-map=/submission/=assignments/" + stage.name + "/"});
+    const std::vector<std::string> flags = compile_flags(in, stage);
     std::vector<mount> mounts = {{sources, "/submission", false},
                                  {contract, "/vl/contract", false},
                                  {in.source_dir / "framework" / "include", "/vl/framework", false},
@@ -243,8 +249,8 @@ void seed_compile_cache(const installation& in, const stage_info& stage, const f
     }
     // The stamp names what was compiled into the cache: the sources' sizes and times and
     // the compiler's flags. The same stamp: nothing to do.
-    std::string stamp;
-    for (const auto& flag : in.cxx_flags) stamp += flag + " ";
+    std::string stamp = in.cxx_compiler.string() + " ";
+    for (const auto& flag : compile_flags(in, stage)) stamp += flag + " ";
     stamp += "\n";
     std::vector<fs::path> dirs = {in.source_dir / "reference" / stage.name, in.assignment_dir(stage)};
     for (const auto& [name, s] : in.stages) dirs.push_back(in.assignment_dir(s));

@@ -36,7 +36,7 @@ struct run_limits {
     std::uint64_t memory_bytes = std::uint64_t{1} << 31;  ///< address space; 0: no limit
     std::uint64_t file_bytes = std::uint64_t{64} << 20;   ///< largest file it may write
     std::uint64_t scratch_bytes = std::uint64_t{64} << 20;  ///< the tmpfs at /scratch (and at /tmp)
-    int processes = 64;                                   ///< threads count too
+    int processes = 16;                                   ///< threads count too
     std::size_t output_bytes = 64 << 10;                  ///< stdout+stderr kept (the rest is counted)
     std::size_t report_bytes = 32 << 20;                  ///< fd 3: more than this ends the run
 };
