@@ -276,6 +276,9 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
             const auto eq = e.find('=');
             args.insert(args.end(), {"--setenv", e.substr(0, eq), e.substr(eq + 1)});
         }
+        // The root and /dev are bubblewrap's own tmpfs, uncapped: read-only once every mount
+        // point is made, so /scratch and /tmp are the only places to write.
+        args.insert(args.end(), {"--remount-ro", "/dev", "--remount-ro", "/"});
         args.insert(args.end(), {"--chdir", rq.cwd, "--", "/usr/bin/prlimit",
                                  "--nproc=" + std::to_string(l.processes), "--"});
         args.insert(args.end(), rq.argv.begin(), rq.argv.end());
