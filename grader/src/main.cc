@@ -164,25 +164,27 @@ fs::path apply_bug_patch(const installation& in, const calibration_case& c, cons
     return dir;
 }
 
-/// A case whose submission a script makes (an archive, a folder with links):
-/// `bash make.sh REPOSITORY OUT_DIR` leaves exactly one file or folder in OUT_DIR.
-calibration_case made_case(const installation& in, calibration_case c, const fs::path& script) {
+/// A case whose submission a script makes (an archive, a folder with links): expected.toml's
+/// `kind` (folder, tar.gz, tar or zip) names it; `bash make.sh REPOSITORY OUT` writes it at OUT.
+calibration_case made_case(const installation& in, calibration_case c, const fs::path& script, const std::string& kind) {
     const fs::path dir = patched_copy_dir(in, c);
     fs::remove_all(dir);
     fs::create_directories(dir);
+    const std::string ext = kind == "folder" ? "" : "." + kind;
+    if (kind != "folder" && kind != "tar.gz" && kind != "tar" && kind != "zip")
+        throw grader_error(c.expected.string() + ": kind must be folder, tar.gz, tar or zip, not \"" + kind + "\"");
+    c.submission = dir / ("submission" + ext);
     vl::grader::run_request rq;
-    rq.argv = {"/bin/bash", fs::absolute(script).string(), in.source_dir.string(), dir.string()};
+    rq.argv = {"/bin/bash", fs::absolute(script).string(), in.source_dir.string(), c.submission.string()};
     rq.cwd = dir.string();
     rq.environment = vl::grader::child_environment(dir.string());
     rq.sandboxed = false;
     rq.limits.wall_seconds = 300;
     const auto r = vl::grader::run(rq, vl::grader::sandbox_capabilities{});
-    std::vector<fs::path> made;
-    for (const auto& e : fs::directory_iterator(dir)) made.push_back(e.path());
-    if (!r.succeeded() || made.size() != 1)
-        throw grader_error(script.string() + " did not make one submission in " + dir.string() + " (" +
-                           r.describe(300) + "): " + r.output_head(1000));
-    c.submission = made.front();
+    std::error_code ec;
+    if (!r.succeeded() || !fs::exists(fs::symlink_status(c.submission, ec)))
+        throw grader_error(script.string() + " did not make " + c.submission.string() + " (" + r.describe(300) +
+                           "): " + r.output_head(1000));
     return c;
 }
 
@@ -206,7 +208,9 @@ calibration_case read_case(const installation& in, const fs::path& dir, const st
     c.description = t["description"].value_or(std::string());
     c.stage = t["stage"].value_or(c.stage);  // cases outside a stage's folder name their stage
     c.budget_seconds = t["budget_seconds"].value_or(0.0);
-    if (const auto make = t["make"].value<std::string>()) return made_case(in, c, dir / *make);
+    // A make.sh beside expected.toml (or the script `make` names) makes the submission.
+    const std::string make = t["make"].value_or(std::string(fs::exists(dir / "make.sh") ? "make.sh" : ""));
+    if (!make.empty()) return made_case(in, c, dir / make, t["kind"].value_or(std::string("folder")));
     const std::string from = t["submission"].value_or(std::string());
     const std::string patch = t["patch"].value_or(std::string());
     const std::string base = t["base"].value_or(std::string("reference"));
