@@ -1,0 +1,36 @@
+#!/bin/bash
+# ADVERSARIAL shapes/tar-bomb: a 2 MiB tar.gz of the stubs and one file of 2 GiB of zeros
+# Usage: make.sh REPO_ROOT OUT   writes the submission (a .tar.gz) at OUT; nothing else is touched.
+set -euo pipefail
+root=$(cd "$1" && pwd)
+out=$(realpath -m "$2")
+stubs="$root/assignments/02-sphere"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+stage_files() {  # the untouched stubs of stage 02 (its .cc and .hh files) into folder $1
+    mkdir -p "$1"
+    cp "$stubs"/*.cc "$stubs"/*.hh "$1"/
+}
+python3 - "$root" "$out" "$stubs" <<'EOF'
+import os, sys, tarfile
+root, out, stubs = sys.argv[1:4]
+def add_stubs(t, prefix):
+    for f in sorted(os.listdir(stubs)):
+        if f.endswith(('.cc', '.hh')):
+            t.add(os.path.join(stubs, f), prefix + f)
+import gzip
+def member(name, data=b'', size=None):  # a tar header (and data) for one regular file
+    info = tarfile.TarInfo(name)
+    info.size = len(data) if size is None else size
+    return info.tobuf(tarfile.GNU_FORMAT) + data + bytes(-len(data) % 512)
+def stub_members(prefix):
+    return b''.join(member(prefix + f, open(os.path.join(stubs, f), 'rb').read())
+                    for f in sorted(os.listdir(stubs)) if f.endswith(('.cc', '.hh')))
+# gzip members may follow one another: the zeros are compressed once and written many times.
+zeros = gzip.compress(bytes(64 << 20), 9, mtime=0)  # 64 MiB of zeros
+with open(out, 'wb') as f:
+    f.write(gzip.compress(stub_members('02-sphere/') + member('02-sphere/padding.bin', size=2 << 30), mtime=0))
+    for _ in range(32):
+        f.write(zeros)
+    f.write(gzip.compress(bytes(1024), mtime=0))  # the end of the archive
+EOF

@@ -1,0 +1,17 @@
+#!/bin/bash
+# ADVERSARIAL shapes/tar-fifo-source: a tar.gz of the stubs whose sphere.cc is a FIFO: whoever opens it to read waits forever
+# Usage: make.sh REPO_ROOT OUT   writes the submission (a .tar.gz) at OUT; nothing else is touched.
+set -euo pipefail
+root=$(cd "$1" && pwd)
+out=$(realpath -m "$2")
+stubs="$root/assignments/02-sphere"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+stage_files() {  # the untouched stubs of stage 02 (its .cc and .hh files) into folder $1
+    mkdir -p "$1"
+    cp "$stubs"/*.cc "$stubs"/*.hh "$1"/
+}
+stage_files "$work/02-sphere"
+rm "$work/02-sphere/sphere.cc"
+mkfifo "$work/02-sphere/sphere.cc"
+tar -czf "$out" -C "$work" 02-sphere

@@ -1,0 +1,27 @@
+#!/bin/bash
+# ADVERSARIAL shapes/zip-bomb: a 2 MiB zip of the stubs and one member of 2 GiB of zeros
+# Usage: make.sh REPO_ROOT OUT   writes the submission (a .zip) at OUT; nothing else is touched.
+set -euo pipefail
+root=$(cd "$1" && pwd)
+out=$(realpath -m "$2")
+stubs="$root/assignments/02-sphere"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+stage_files() {  # the untouched stubs of stage 02 (its .cc and .hh files) into folder $1
+    mkdir -p "$1"
+    cp "$stubs"/*.cc "$stubs"/*.hh "$1"/
+}
+python3 - "$root" "$out" "$stubs" <<'EOF'
+import os, sys, zipfile
+root, out, stubs = sys.argv[1:4]
+def add_stubs(z, prefix):
+    for f in sorted(os.listdir(stubs)):
+        if f.endswith(('.cc', '.hh')):
+            z.write(os.path.join(stubs, f), prefix + f)
+with zipfile.ZipFile(out, 'w', zipfile.ZIP_DEFLATED, compresslevel=9) as z:
+    add_stubs(z, '02-sphere/')
+    with z.open('02-sphere/padding.bin', 'w', force_zip64=True) as f:
+        zeros = bytes(1 << 20)
+        for _ in range(2048):
+            f.write(zeros)
+EOF
