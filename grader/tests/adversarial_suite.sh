@@ -7,8 +7,9 @@
 # expected.toml (the score's range, the verdict, the results.json format), and again with
 # --no-policy when expected.toml has a [sandbox] table, so the sandbox alone must hold it.
 # N cases run at a time (default 2). Each grade has a time bound. Before and after the
-# whole suite the checkout, the build tree (less the suite's own output) and /tmp are
-# listed (path, size, mode, owner, mtime): any difference fails the suite and is shown.
+# whole suite the checkout, the build tree (less the suite's own output) and /tmp (what a
+# sandbox's user owns there, and anything named for an attack) are listed (path, size,
+# mode, owner, mtime): any difference fails the suite and is shown.
 # ctest runs this alone (RUN_SERIAL), so nothing else changes those folders meanwhile.
 set -uo pipefail
 grader=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -28,7 +29,11 @@ manifest() {
     find "$build" \( -path "$out" -o -path "$build/grader/calibration" -o -path "$build/grader/calibration-sources" \
       -o -path "$build/Testing" -o -path "$build/grader/kit-test" -o -path "$build/grader/compile-cache" \
       -o -name 'compile-cache-*.stamp' \) -prune -o -printf '%p %s %m %U %T@\n'
-    find /tmp -xdev -maxdepth 4 -printf '%p %s %m %U\n' 2>/dev/null
+    # In /tmp, what an escaped sandbox would leave: files of the sandbox's user (nobody,
+    # when the grader runs as root) and the attacks' own marks. The rest of /tmp belongs
+    # to whatever else runs on the machine, which may change it meanwhile.
+    find /tmp -xdev -maxdepth 4 -path "$out" -prune -o \( -user 65534 -o -name '*adversarial*' \) \
+      -printf '%p %s %m %U\n' 2>/dev/null
   } | sort
 }
 
