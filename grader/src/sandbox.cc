@@ -147,7 +147,6 @@ std::string sandbox_capabilities::summary() const {
     } else {
         s = "WEAKER SANDBOX (no bubblewrap here): the grader's own files are NOT hidden from student code";
         s += network_isolated ? "; no network" : "; network NOT isolated";
-        s += pid_isolated ? "; own PID namespace" : "";
     }
     s += "; timeouts; limits on CPU time, ";
     s += address_limit ? "memory, " : "(not memory: sanitizer build), ";
@@ -187,7 +186,6 @@ sandbox_capabilities probe_sandbox(bool sanitized, bool allow_weaker) {
                                  "will say so");
     c.mode = isolation::weaker;
     c.network_isolated = try_unshare_in_child(CLONE_NEWNET);
-    c.pid_isolated = try_unshare_in_child(CLONE_NEWPID);
     return c;
 }
 

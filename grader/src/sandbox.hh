@@ -56,7 +56,6 @@ struct sandbox_capabilities {
     gid_t gid = 65534;
     bool address_limit = true;      ///< RLIMIT_AS applies (not under AddressSanitizer)
     bool network_isolated = false;  ///< weaker mode: a new network namespace worked
-    bool pid_isolated = false;      ///< weaker mode: a new PID namespace worked
     /// One line for the report: what is isolated and what is not.
     std::string summary() const;
 };
