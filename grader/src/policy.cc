@@ -193,13 +193,13 @@ const std::map<std::string, const char*, std::less<>>& denied_words() {
 /// Whether a line marker's file is the student's: anything but the toolchain's and the
 /// framework's headers, whatever spelling of a path led to it (/./submission/x.hh,
 /// //submission/x.hh and /proc/self/root/submission/x.hh are all the student's).
-bool is_students(const std::string& file, const std::string& student_prefix) {
+bool is_students(const std::string& file, const std::string& student_prefix, const std::vector<std::string>& trusted) {
     if (file == "<built-in>" || file == "<command-line>") return false;
     std::string normal = std::filesystem::path(file).lexically_normal().string();
     while (normal.starts_with("//")) normal.erase(0, 1);
     if (normal.starts_with(student_prefix)) return true;
-    for (const char* trusted : {"/usr/", "/vl/framework/", "/vl/contract/"})
-        if (normal.starts_with(trusted)) return false;
+    for (const std::string& t : trusted)
+        if (normal.starts_with(t)) return false;
     return true;
 }
 
@@ -281,7 +281,8 @@ std::vector<policy_finding> check_symbols(const std::string& file, const std::ve
     return found;
 }
 
-std::vector<policy_finding> check_preprocessed(const std::string& text, const std::string& student_prefix) {
+std::vector<policy_finding> check_preprocessed(const std::string& text, const std::string& student_prefix,
+                                               const std::vector<std::string>& trusted) {
     std::vector<policy_finding> found;
     std::set<std::pair<std::string, std::string>> seen;
     std::istringstream in(text);
@@ -302,7 +303,7 @@ std::vector<policy_finding> check_preprocessed(const std::string& text, const st
             number = std::atoi(line.c_str() + 2) - 1;
             if (q1 != std::string::npos && q2 > q1) {
                 file = line.substr(q1 + 1, q2 - q1 - 1);
-                mine = is_students(file, student_prefix);
+                mine = is_students(file, student_prefix, trusted);
             }
             continue;
         }

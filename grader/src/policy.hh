@@ -46,8 +46,12 @@ std::vector<policy_finding> check_symbols(const std::string& file, const std::ve
                                           const std::set<std::string>& strong);
 
 /// Checks a preprocessed source (`g++ -E` output): only the lines that come from the
-/// student's own files, those whose line markers name a path under `student_prefix`.
-std::vector<policy_finding> check_preprocessed(const std::string& text, const std::string& student_prefix);
+/// student's own files: those whose line markers name a path under `student_prefix`, or
+/// any path not under one of the `trusted` folders (the toolchain's and the framework's
+/// headers), whatever its spelling.
+std::vector<policy_finding> check_preprocessed(const std::string& text, const std::string& student_prefix,
+                                               const std::vector<std::string>& trusted = {"/usr/", "/vl/framework/",
+                                                                                          "/vl/contract/"});
 
 /// Checks a student's file as written: a `#line` directive would make the preprocessed
 /// text say its code comes from another file (a system header), out of check_preprocessed's sight.
