@@ -9,8 +9,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -32,11 +30,6 @@ bool has_cc(const fs::path& dir) {
     for (const auto& e : fs::directory_iterator(dir, ec))
         if (e.is_regular_file() && e.path().extension() == ".cc") return true;
     return false;
-}
-
-std::string read_all(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 /// The shell script the intake sandbox runs: unpack (when an archive) into the tmpfs, count
@@ -240,7 +233,8 @@ prepared_submission prepare_submission(const fs::path& submission, const stage_i
             const fs::path file = e.path().filename();
             fs::copy_file(e.path(), p.contract / file, fs::copy_options::overwrite_existing);
             if (fs::exists(p.sources / file)) {
-                if (read_all(p.sources / file) != read_all(e.path()))
+                if (read_regular_file(p.sources / file, limits.source_bytes) !=
+                    read_regular_file(e.path(), limits.source_bytes))
                     p.notes.push_back("your " + file.string() + " differs from the original; the original was used");
                 fs::remove(p.sources / file);
             }
