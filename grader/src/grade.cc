@@ -26,14 +26,24 @@ std::string now_utc() {
     return buf;
 }
 
-/// Shares `points` among `n` items in thousandths of a point, the first ones taking the
-/// remainder, so the shares add up to exactly the points.
-std::vector<long long> shares(double points, std::size_t n) {
-    std::vector<long long> out(n, 0);
-    if (n == 0) return out;
+/// Shares `points` among items in proportion to `weights`, in thousandths of a point
+/// (largest remainders first), so the shares add up to exactly the points.
+std::vector<long long> shares(double points, const std::vector<double>& weights) {
+    std::vector<long long> out(weights.size(), 0);
+    double sum = 0;
+    for (const double w : weights) sum += w;
+    if (weights.empty() || sum <= 0) return out;
     const long long total = std::llround(points * 1000);
-    for (std::size_t k = 0; k < n; ++k)
-        out[k] = total / static_cast<long long>(n) + (static_cast<long long>(k) < total % static_cast<long long>(n) ? 1 : 0);
+    long long given = 0;
+    std::vector<std::pair<double, std::size_t>> remainders;
+    for (std::size_t k = 0; k < weights.size(); ++k) {
+        const double exact = static_cast<double>(total) * weights[k] / sum;
+        out[k] = static_cast<long long>(std::floor(exact));
+        given += out[k];
+        remainders.push_back({exact - static_cast<double>(out[k]), k});
+    }
+    std::stable_sort(remainders.begin(), remainders.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t k = 0; given < total && k < remainders.size(); ++k, ++given) out[remainders[k].second] += 1;
     return out;
 }
 
@@ -110,7 +120,9 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
         std::vector<const test_case_info*> mine;
         for (const test_case_info& t : tests)
             if (r.category_of(t) == &c) mine.push_back(&t);
-        const std::vector<long long> share = shares(c.points, mine.size());
+        std::vector<double> weights;
+        for (const test_case_info* t : mine) weights.push_back(c.weight_of(*t));
+        const std::vector<long long> share = shares(c.points, weights);
         for (std::size_t k = 0; k < mine.size(); ++k) {
             graded_item i;
             i.name = mine[k]->name;

@@ -51,6 +51,14 @@ double number(const fs::path& file, const toml::table& t, const char* key, doubl
 
 }  // namespace
 
+double rubric_category::weight_of(const test_case_info& t) const {
+    if (const auto by_name = weights.find(t.name); by_name != weights.end()) return by_name->second;
+    double w = -1;
+    for (const std::string& tag : t.tags)
+        if (const auto by_tag = weights.find(tag); by_tag != weights.end()) w = std::max(w, by_tag->second);
+    return w < 0 ? 1 : w;
+}
+
 const rubric_category* rubric::category_of(const test_case_info& t) const {
     for (const rubric_category& c : categories) {
         if (std::find(c.tests.begin(), c.tests.end(), t.name) != c.tests.end()) return &c;
@@ -100,6 +108,16 @@ rubric load_rubric(const fs::path& file, bool sanitized) {
             cat.points = number(file, c, "points", 0);
             cat.tags = strings(file, c, "tags");
             cat.tests = strings(file, c, "tests");
+            if (const toml::node* w = c.get("weights")) {
+                const toml::table* wt = w->as_table();
+                if (!wt) throw grader_error(place(file, *w) + ": 'weights' must be a table of tag or test name = number");
+                for (const auto& [key, value] : *wt) {
+                    const auto v = value.value<double>();
+                    if (!v || *v < 0) throw grader_error(place(file, value) + ": the weight of '" + std::string(key.str()) +
+                                                         "' must be a number, 0 or more");
+                    cat.weights[std::string(key.str())] = *v;
+                }
+            }
             cat.visibility = visibility(file, c, r.visibility);
             r.categories.push_back(cat);
         }
@@ -139,10 +157,17 @@ void check_rubric(const rubric& r, const std::vector<test_case_info>& tests) {
         for (const std::string& name : c.tests)
             if (std::none_of(tests.begin(), tests.end(), [&](const test_case_info& t) { return t.name == name; }))
                 problems += "  category '" + c.name + "' names test '" + name + "', which does not exist\n";
-        const bool has_tests = std::any_of(tests.begin(), tests.end(),
-                                           [&](const test_case_info& t) { return r.category_of(t) == &c; });
-        if (c.points > 0 && !has_tests)
-            problems += "  category '" + c.name + "' has " + std::to_string(c.points) + " points but no test\n";
+        double total_weight = 0;
+        for (const test_case_info& t : tests)
+            if (r.category_of(t) == &c) total_weight += c.weight_of(t);
+        if (c.points > 0 && total_weight <= 0)
+            problems += "  category '" + c.name + "' has " + std::to_string(c.points) + " points but no test that weighs\n";
+        for (const auto& [key, weight] : c.weights) {
+            const bool known = std::any_of(tests.begin(), tests.end(), [&](const test_case_info& t) {
+                return t.name == key || std::find(t.tags.begin(), t.tags.end(), key) != t.tags.end();
+            });
+            if (!known) problems += "  category '" + c.name + "' weighs '" + key + "', which is no test's name or tag\n";
+        }
     }
     if (!problems.empty()) throw grader_error(r.file.string() + " does not fit the hidden tests:\n" + problems);
 }

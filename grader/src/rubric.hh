@@ -3,6 +3,7 @@
 /// \brief An assignment's rubric (grader/hidden/NN-name/rubric.toml): categories with
 /// points, which hidden tests and scenes earn them, limits, Gradescope visibility.
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,10 +15,14 @@ namespace vl::grader {
 /// \brief A part of the grade, such as "Rays from inside".
 struct rubric_category {
     std::string name, title;
-    double points = 0;                ///< shared equally by its tests
+    double points = 0;                ///< shared by its tests in proportion to their weights
     std::vector<std::string> tags;    ///< Catch2 tags (no brackets) that put a test here
     std::vector<std::string> tests;   ///< test names that put a test here
+    std::map<std::string, double> weights;  ///< by tag (no brackets) or test name; others weigh 1
     std::string visibility;
+
+    /// The weight of `t`: its name's, else the largest of its tags', else 1.
+    double weight_of(const test_case_info& t) const;
 };
 
 /// \brief A hidden scene, rendered with the submission and compared with the reference.

@@ -16,7 +16,7 @@ using vl::vector;
 using vl::stage02::make_plane;
 using namespace vl::stage02::hidden;
 
-TEST_CASE("plane: a slanted ray meets a tilted plane where the plane equation says", "[02][plane][planes]") {
+TEST_CASE("plane: a slanted ray meets a tilted plane where the plane equation says", "[02][plane][planes][essential]") {
     const point p0(1, -2, 0.5);
     const vector n(2, 3, -1);  // not unit
     const auto pl = make_plane(p0, n);
@@ -190,7 +190,7 @@ TEST_CASE("plane: make_plane refuses a normal or a point that is not finite", "[
     CHECK_NOTHROW(make_plane(point(0, 0, 0), vector(1e-5, 0, 0)));
 }
 
-TEST_CASE("plane: an empty PLANE in a scene file is the floor through the origin facing up", "[02][plane][planes]") {
+TEST_CASE("plane: an empty PLANE in a scene file is the floor through the origin facing up", "[02][plane][planes][detail]") {
     const auto pl = read_one("PLANE { }");
     const intersection i = pl->intersect(ray(point(3, 1.5, -2), vector(0, -1, 0)));
     REQUIRE(clean_hit(i, pl.get()));

@@ -43,7 +43,7 @@ bool any_hit(const std::vector<std::unique_ptr<primitive>>& faces, const ray& r)
 
 }  // namespace
 
-TEST_CASE("polygon: a tilted regular hexagon is hit just inside each edge and missed just outside", "[02][polygon][polygons]") {
+TEST_CASE("polygon: a tilted regular hexagon is hit just inside each edge and missed just outside", "[02][polygon][polygons][essential]") {
     const vector n = vector(0.3, -0.4, 1).unit();
     vector u, v;
     plane_axes(n, u, v);
@@ -245,7 +245,7 @@ TEST_CASE("polygon: vertices written with seven decimals are accepted while a be
                     vl::usage_error);
 }
 
-TEST_CASE("polygon: an empty POLYGON in a scene file is the unit square facing plus z", "[02][polygon][polygons]") {
+TEST_CASE("polygon: an empty POLYGON in a scene file is the unit square facing plus z", "[02][polygon][polygons][detail]") {
     const auto p = read_one("POLYGON { }");
     const intersection i = p->intersect(ray(point(0.9, 0.9, 3), vector(0, 0, -1)));
     REQUIRE(clean_hit(i, p.get()));

@@ -26,7 +26,7 @@ double hit_t(const vl::rtab_component& s, const ray& r) {
 
 // --- hits: rays from outside ------------------------------------------------------------
 
-TEST_CASE("sphere: a ray towards the centre hits the near side", "[02][sphere][hits]") {
+TEST_CASE("sphere: a ray towards the centre hits the near side", "[02][sphere][hits][essential]") {
     const auto s = make_sphere(point(0, 0, -5), 1);
     const vl::intersection i = s->intersect(ray(point(0, 0, 0), vector(0, 0, -1)));
     REQUIRE(i.hit());
@@ -34,25 +34,25 @@ TEST_CASE("sphere: a ray towards the centre hits the near side", "[02][sphere][h
     CHECK(i.object == s.get());
 }
 
-TEST_CASE("sphere: an off-centre ray hits where the geometry says", "[02][sphere][hits]") {
+TEST_CASE("sphere: an off-centre ray hits where the geometry says", "[02][sphere][hits][essential]") {
     const auto s = make_sphere(point(1, 2, 3), 2);
     // Through (1, 3, 3 + sqrt(3)) on the sphere, from straight above the hit along -z.
     const double t = hit_t(*s, ray(point(1, 3, 10), vector(0, 0, -1)));
     CHECK(t == Approx(10 - (3 + std::sqrt(3.0))).epsilon(1e-12));
 }
 
-TEST_CASE("sphere: rays that pass beside it miss", "[02][sphere][hits]") {
+TEST_CASE("sphere: rays that pass beside it miss", "[02][sphere][hits][essential]") {
     const auto s = make_sphere(point(0, 0, 0), 1);
     CHECK_FALSE(s->intersect(ray(point(0, 1.0001, 5), vector(0, 0, -1))).hit());
     CHECK_FALSE(s->intersect(ray(point(2, 2, 2), vector(1, 1, 0))).hit());
 }
 
-TEST_CASE("sphere: a sphere behind the ray is not hit", "[02][sphere][hits]") {
+TEST_CASE("sphere: a sphere behind the ray is not hit", "[02][sphere][hits][essential]") {
     const auto s = make_sphere(point(0, 0, 5), 1);
     CHECK_FALSE(s->intersect(ray(point(0, 0, 0), vector(0, 0, -1))).hit());
 }
 
-TEST_CASE("sphere: the hit distance does not depend on the ray's direction's length", "[02][sphere][hits]") {
+TEST_CASE("sphere: the hit distance does not depend on the ray's direction's length", "[02][sphere][hits][essential]") {
     const auto s = make_sphere(point(0, 0, -10), 2);
     CHECK(hit_t(*s, ray(point(0, 0, 0), vector(0, 0, -1e-3))) == Approx(8).epsilon(1e-12));
     CHECK(hit_t(*s, ray(point(0, 0, 0), vector(0, 0, -1e3))) == Approx(8).epsilon(1e-12));
@@ -148,7 +148,7 @@ TEST_CASE("sphere: the box is the centre plus and minus the radius", "[02][spher
 
 // --- scene files -------------------------------------------------------------------------
 
-TEST_CASE("sphere: a scene file's SPHERE is read with its centre and radius", "[02][sphere][scene_io]") {
+TEST_CASE("sphere: a scene file's SPHERE is read with its centre and radius", "[02][sphere][scene_io][detail]") {
     vl::registry types;
     vl::register_framework(types);
     vl::stage02::register_stage_02(types);
@@ -156,7 +156,7 @@ TEST_CASE("sphere: a scene file's SPHERE is read with its centre and radius", "[
     CHECK(hit_t(*sc.root, ray(point(0, 0, 0), vector(0, 0, -1))) == Approx(3).epsilon(1e-12));
 }
 
-TEST_CASE("sphere: write() gives text that reads back as the same sphere", "[02][sphere][scene_io]") {
+TEST_CASE("sphere: write() gives text that reads back as the same sphere", "[02][sphere][scene_io][detail]") {
     vl::registry types;
     vl::register_framework(types);
     vl::stage02::register_stage_02(types);

@@ -33,7 +33,7 @@ bool mesh_hit(const mesh& m, const ray& r) {
 
 }  // namespace
 
-TEST_CASE("triangle: rays aimed at random points of a slanted triangle hit exactly there", "[02][triangle][triangles]") {
+TEST_CASE("triangle: rays aimed at random points of a slanted triangle hit exactly there", "[02][triangle][triangles][essential]") {
     const point a(1.5, -0.2, 3.1), b(-2.2, 1.7, 0.4), c(0.3, 2.9, -1.8);
     const auto tri = make_triangle(a, b, c);
     sampler random(21);
@@ -286,7 +286,7 @@ TEST_CASE("triangle: make_triangle refuses coincident or non-finite vertices", "
     CHECK_NOTHROW(make_triangle(point(0, 0, 0), point(1e-3, 0, 0), point(0, 1e-3, 0)));
 }
 
-TEST_CASE("triangle: an empty TRIANGLE in a scene file is the default one facing plus z", "[02][triangle][triangles]") {
+TEST_CASE("triangle: an empty TRIANGLE in a scene file is the default one facing plus z", "[02][triangle][triangles][detail]") {
     const auto t = read_one("TRIANGLE { }");
     const intersection i = t->intersect(ray(point(0.25, 0.25, 2), vector(0, 0, -1)));
     REQUIRE(clean_hit(i, t.get()));
