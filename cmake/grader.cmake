@@ -36,6 +36,19 @@ function(vl_grader_reference_library stage)
   target_link_libraries(vl_grader_reference_${number} PUBLIC vl_framework PRIVATE vl_warnings)
 endfunction()
 
+# vl_grader_oracle_library(NN-name): vl_grader_oracle_NN, the stage's reference again,
+# compiled into namespace vl::reference_stageNN instead of vl::stageNN, so that it can be
+# linked beside a submission's code of the same stage: the grader's render program takes
+# from it every piece a graded scene does not take from the submission.
+function(vl_grader_oracle_library stage)
+  string(SUBSTRING ${stage} 0 2 number)
+  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
+  add_library(vl_grader_oracle_${number} STATIC ${sources})
+  target_compile_definitions(vl_grader_oracle_${number} PRIVATE stage${number}=reference_stage${number})
+  target_include_directories(vl_grader_oracle_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
+  target_link_libraries(vl_grader_oracle_${number} PUBLIC vl_framework PRIVATE vl_warnings)
+endfunction()
+
 # Renders `scene` with `renderer` into `png` at build time (the reference renders).
 function(vl_grader_reference_render renderer scene png)
   add_custom_command(OUTPUT ${png}

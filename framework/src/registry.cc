@@ -34,6 +34,18 @@ std::vector<std::string> registry::names() const {
     return out;
 }
 
+std::vector<std::string> registry::sampler_names() const {
+    std::vector<std::string> out;
+    for (const auto& [name, make] : samplers_) out.push_back(name);
+    return out;
+}
+
+std::vector<std::string> registry::tracer_names() const {
+    std::vector<std::string> out;
+    for (const auto& [name, make] : tracers_) out.push_back(name);
+    return out;
+}
+
 void registry::set_camera(camera_factory make) {
     if (!make) throw usage_error("registry: set_camera() was given no factory");
     camera_ = std::move(make);

@@ -72,3 +72,16 @@ TEST_CASE("registry: without stage 01, asking for a camera or sampler says which
     CHECK_THROWS_AS(r.set_camera(nullptr), usage_error);
     CHECK_THROWS_AS(r.add_sampler("grid", nullptr), usage_error);
 }
+
+TEST_CASE("registry: lists its sample patterns and tracers and knows whether it has a camera", "[rt][registry]") {
+    registry r;
+    CHECK_FALSE(r.has_camera());
+    CHECK(r.sampler_names().empty());
+    register_framework(r);
+    CHECK(r.tracer_names() == std::vector<std::string>{"flat", "normals", "sky"});
+    r.add_sampler("zeta", [] { return std::unique_ptr<sampler>(); });
+    r.add_sampler("alpha", [] { return std::unique_ptr<sampler>(); });
+    CHECK(r.sampler_names() == std::vector<std::string>{"alpha", "zeta"});
+    r.set_camera([](const camera_settings&, int, int) { return std::unique_ptr<camera>(); });
+    CHECK(r.has_camera());
+}

@@ -110,6 +110,16 @@ std::string trim_compiler_errors(const std::string& log, int max_lines) {
     return out;
 }
 
+/// `errors` with, first, a note for each contract header the student had changed: the
+/// grader used the original, which is often why their code no longer compiles or links.
+std::string with_contract_note(const prepared_submission& sub, std::string errors) {
+    for (const std::string& h : sub.replaced_contracts)
+        errors = "note: your " + h + " differs from the original, and the original was used (the grader always "
+                 "uses the contract as handed out). If the errors below are about something you declared or "
+                 "changed in " + h + ", move it into your own .cc or .hh files.\n\n" + errors;
+    return errors;
+}
+
 std::string explain_link_errors(const std::string& log) {
     std::set<std::string> missing, twice;
     std::vector<std::string> other;
@@ -303,7 +313,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
                                                      cache_use::read_only, left());
     b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!compiled.errors.empty()) {
-        b.errors = trim_compiler_errors(compiled.errors, 40);
+        b.errors = with_contract_note(sub, trim_compiler_errors(compiled.errors, 40));
         return b;
     }
 
@@ -315,6 +325,9 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         renderer.push_back({in.renderer_objects[k], "/vl/prebuilt/rt" + std::to_string(k) + ".o"});
     for (const auto& [name, s] : in.stages)
         if (name != stage.name) group.push_back({s.reference_library, "/vl/prebuilt/reference_" + s.number + ".a"});
+    // Every stage's reference under its other name, for the render program's pieces that a
+    // graded scene does not take from the submission (hidden/common/graded_pieces.cc).
+    for (const auto& [name, s] : in.stages) group.push_back({s.oracle_library, "/vl/prebuilt/oracle_" + s.number + ".a"});
     for (std::size_t k = 0; k < in.framework_libraries.size(); ++k)
         group.push_back({in.framework_libraries[k], "/vl/prebuilt/framework" + std::to_string(k) + ".a"});
     const prebuilt_part catch_main{in.catch_main, "/vl/prebuilt/catch_main.a"};
@@ -410,7 +423,10 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     const bool tests_ok = hidden.empty() || link("hidden_tests", hidden, true);
     const bool render_ok = tests_ok && link("render", renderer, false);
     b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!tests_ok || !render_ok) return b;
+    if (!tests_ok || !render_ok) {
+        b.errors = with_contract_note(sub, b.errors);
+        return b;
+    }
     b.ok = true;
     if (!hidden.empty()) b.tests_program = bin / "hidden_tests";
     b.render_program = bin / "render";

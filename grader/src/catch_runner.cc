@@ -33,34 +33,41 @@ std::string trim(std::string s) {
     return s;
 }
 
+/// Where a failure is, for the student: a public test's file and line (they have that
+/// file), nothing for a hidden test (they do not; the test's name says which it is).
 std::string where(const pugi::xml_node& n) {
-    const std::string file = fs::path(n.attribute("filename").as_string()).filename().string();
-    return file.empty() ? std::string() : file + ":" + n.attribute("line").as_string() + ": ";
+    const fs::path file = n.attribute("filename").as_string();
+    if (file.empty() || file.string().find("/assignments/") == std::string::npos) return {};
+    return "tests/" + file.filename().string() + ":" + n.attribute("line").as_string() + ": ";
 }
 
-/// Every failure under `node` (sections nest), with the INFO messages in scope.
+/// Every failure under `node` (sections nest), each with the INFO messages Catch2 wrote
+/// for it (the ones in scope at that check; they come just before it).
 void collect_failures(const pugi::xml_node& node, std::string& out, int& count) {
     std::string infos;
+    auto report = [&](const std::string& text) {
+        if (++count <= 6) out += text + infos;
+        infos.clear();
+    };
     for (const pugi::xml_node& c : node.children()) {
         const std::string kind = c.name();
         if (kind == "Info") {
             infos += "  with: " + trim(c.text().as_string()) + "\n";
         } else if (kind == "Expression" && !c.attribute("success").as_bool(true)) {
-            if (++count > 6) continue;
-            out += where(c) + c.attribute("type").as_string() + "( " + trim(c.child("Original").text().as_string()) +
-                   " )\n  with values: " + trim(c.child("Expanded").text().as_string()) + "\n" + infos;
-            for (const pugi::xml_node& e : c.children("Exception"))
-                out += "  threw: " + trim(e.text().as_string()) + "\n";
+            const std::string original = trim(c.child("Original").text().as_string());
+            const std::string expanded = trim(c.child("Expanded").text().as_string());
+            std::string text = where(c) + c.attribute("type").as_string() + "( " + original + " )\n";
+            if (!expanded.empty() && expanded != original) text += "  with values: " + expanded + "\n";
+            for (const pugi::xml_node& e : c.children("Exception")) text += "  threw: " + trim(e.text().as_string()) + "\n";
+            report(text);
         } else if (kind == "Exception") {
-            if (++count > 6) continue;
-            out += where(c) + "threw an exception: " + trim(c.text().as_string()) + "\n" + infos;
+            report(where(c) + "threw an exception: " + trim(c.text().as_string()) + "\n");
         } else if (kind == "FatalErrorCondition") {
-            if (++count > 6) continue;
-            out += where(c) + "crashed: " + trim(c.text().as_string()) + "\n" + infos;
+            report(where(c) + "crashed: " + trim(c.text().as_string()) + "\n");
         } else if (kind == "Failure") {
-            if (++count > 6) continue;
-            out += where(c) + "failed: " + trim(c.text().as_string()) + "\n" + infos;
+            report(where(c) + trim(c.text().as_string()) + "\n");
         } else if (kind == "Section") {
+            infos.clear();
             collect_failures(c, out, count);
         }
     }

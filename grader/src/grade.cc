@@ -88,7 +88,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     g.sandbox = caps.summary();
     if (!options.policy) g.sandbox += "; the source and symbol policy was OFF (a sandbox test)";
 
-    rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.sanitized);
+    rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.assignment_dir(stage) / "scenes", in.sanitized);
     if (options.budget_seconds > 0) r.grade_budget_seconds = options.budget_seconds;
     g.title = r.title;
     const fs::path work = options.out / "work", renders = options.out / "renders";
@@ -137,12 +137,12 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             if (s.category != c.name) continue;
             graded_item i;
             i.what = graded_item::kind::scene;
-            i.name = "scene: " + s.title;
+            i.name = (s.is_public ? "public scene: " : "scene: ") + s.title;
             i.category = c.name;
             i.visibility = s.visibility;
-            i.tags = {"scene", s.file.filename().string()};
+            i.tags = {"scene", s.id};
             i.max_units = std::llround(s.points * 1000);
-            i.reference_image = in.reference_renders / stage.name / (s.file.stem().string() + ".png");
+            i.reference_image = in.reference_renders / stage.name / (s.id + ".png");
             if (!fs::exists(i.reference_image))
                 throw grader_error(i.reference_image.string() + " is missing: rebuild with tools/setup");
             g.items.push_back(i);
@@ -184,7 +184,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     i.seconds = o.seconds;
                 } else {
                     const rubric_scene& s = *std::find_if(r.scenes.begin(), r.scenes.end(), [&](const rubric_scene& x) {
-                        return x.file.filename().string() == i.tags[1];
+                        return x.id == i.tags[1];
                     });
                     run_limits limits = r.render_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());

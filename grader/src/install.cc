@@ -64,6 +64,7 @@ installation load_installation() {
             info.number = str(s, "number");
             info.trusted_tests = str(s, "trusted_tests");
             info.reference_library = str(s, "reference_library");
+            info.oracle_library = str(s, "oracle_library");
             info.hidden_objects = paths(s, "hidden_objects");
             in.stages[info.name] = info;
         }

@@ -25,7 +25,8 @@ constexpr const char* early = "runs code before main";
 constexpr const char* counters = "tampers with the intersection counters";
 constexpr const char* harness = "reaches into the test framework";
 constexpr const char* replaces = "replaces a symbol of the framework or the runtime";
-constexpr const char* environment = "changes the environment";
+constexpr const char* environment = "reads or changes the environment";
+constexpr const char* reference = "calls the reference solution";
 
 /// C functions a piece never calls, by what calling them means.
 const std::map<std::string, const char*, std::less<>>& denied_functions() {
@@ -66,7 +67,8 @@ const std::map<std::string, const char*, std::less<>>& denied_functions() {
                        "prlimit", "prlimit64", "setuid", "seteuid", "setreuid", "setresuid", "setgid", "setegid",
                        "setregid", "setresgid", "capset", "process_vm_readv", "process_vm_writev",
                        "sched_setaffinity", "sched_setscheduler", "setpriority", "nice"});
-        add(environment, {"setenv", "putenv", "unsetenv", "clearenv"});
+        add(environment, {"setenv", "putenv", "unsetenv", "clearenv", "getenv", "secure_getenv", "environ",
+                          "program_invocation_name", "program_invocation_short_name", "progname", "progname_full"});
         return d;
     }();
     return m;
@@ -79,6 +81,7 @@ const std::vector<std::pair<std::string_view, const char*>>& denied_prefixes() {
         {"std::basic_filebuf", files},   {"std::__basic_file", files},      {"std::filesystem::", files},
         {"std::experimental::filesystem", files}, {"std::__cxx11::basic_ifstream", files},
         {"Catch::", harness},            {"vl::clear_counts", counters},
+        {"vl::reference_stage", reference},
     };
     return p;
 }

@@ -1,6 +1,7 @@
 #include "rubric.hh"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include <toml++/toml.h>
@@ -41,6 +42,11 @@ std::string visibility(const fs::path& file, const toml::table& t, const std::st
     return v;
 }
 
+/// True for 1 to 10 upper-case letters, an object type's name in a scene file.
+bool registry_name(const std::string& s) {
+    return !s.empty() && s.size() <= 10 && std::all_of(s.begin(), s.end(), [](char c) { return c >= 'A' && c <= 'Z'; });
+}
+
 double number(const fs::path& file, const toml::table& t, const char* key, double fallback) {
     const toml::node* n = t.get(key);
     if (!n) return fallback;
@@ -68,7 +74,7 @@ const rubric_category* rubric::category_of(const test_case_info& t) const {
     return nullptr;
 }
 
-rubric load_rubric(const fs::path& file, bool sanitized) {
+rubric load_rubric(const fs::path& file, const fs::path& public_scenes, bool sanitized) {
     if (!fs::exists(file)) throw grader_error(file.string() + " is missing: every graded assignment needs a rubric");
     toml::table t;
     try {
@@ -82,6 +88,7 @@ rubric load_rubric(const fs::path& file, bool sanitized) {
     r.assignment = t["assignment"].value_or(std::string());
     r.title = t["title"].value_or(r.assignment);
     r.visibility = visibility(file, t, "after_published");
+    r.total_points = number(file, t, "total_points", 0);
     if (const toml::table* l = t["limits"].as_table()) {
         r.test_limits.wall_seconds = number(file, *l, "test_timeout_seconds", 10);
         r.render_limits.wall_seconds = number(file, *l, "render_timeout_seconds", 60);
@@ -127,8 +134,17 @@ rubric load_rubric(const fs::path& file, bool sanitized) {
         for (const toml::node& n : *scenes) {
             const toml::table& s = *n.as_table();
             rubric_scene sc;
-            sc.file = file.parent_path() / "scenes" / s["file"].value_or(std::string());
+            sc.is_public = s["public"].value_or(false);
+            sc.file = (sc.is_public ? public_scenes : file.parent_path() / "scenes") / s["file"].value_or(std::string());
             if (!fs::is_regular_file(sc.file)) throw grader_error(place(file, n) + ": scene " + sc.file.string() + " is missing");
+            sc.id = (sc.is_public ? "public-" : "") + sc.file.stem().string();
+            sc.student_pieces = strings(file, s, "student_pieces");
+            for (const std::string& piece : sc.student_pieces) {
+                const bool object = registry_name(piece);
+                if (!object && piece != "camera" && !piece.starts_with("sampler:") && !piece.starts_with("tracer:"))
+                    throw grader_error(place(file, n) + ": student_pieces names '" + piece +
+                                       "': use camera, sampler:NAME, tracer:NAME or an object type such as SPHERE");
+            }
             sc.title = s["title"].value_or(sc.file.stem().string());
             sc.category = s["category"].value_or(std::string());
             if (!names.contains(sc.category))
@@ -145,6 +161,14 @@ rubric load_rubric(const fs::path& file, bool sanitized) {
             sc.visibility = visibility(file, s, cat->visibility);
             r.scenes.push_back(sc);
         }
+    }
+    if (r.total_points > 0) {
+        double sum = 0;
+        for (const rubric_category& c : r.categories) sum += c.points;
+        for (const rubric_scene& sc : r.scenes) sum += sc.points;
+        if (std::abs(sum - r.total_points) > 1e-9)
+            throw grader_error(file.string() + ": the categories' and scenes' points add up to " + std::to_string(sum) +
+                               ", not total_points = " + std::to_string(r.total_points));
     }
     return r;
 }

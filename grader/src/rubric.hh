@@ -27,7 +27,13 @@ struct rubric_category {
 
 /// \brief A hidden scene, rendered with the submission and compared with the reference.
 struct rubric_scene {
-    std::filesystem::path file;       ///< in grader/hidden/NN-name/scenes
+    std::filesystem::path file;       ///< in grader/hidden/NN-name/scenes, or (public) assignments/NN-name/scenes
+    bool is_public = false;           ///< one of the stage's public scenes
+    std::string id;                   ///< the file's stem, "public-" first for a public scene: names its images
+    /// The pieces rendered with the submission's code (`camera`, `sampler:NAME`,
+    /// `tracer:NAME`, object type names); every other piece is the reference's. Empty:
+    /// all of them are the submission's.
+    std::vector<std::string> student_pieces;
     std::string title, category, visibility;
     double points = 0;
     std::string metric = "mean_abs";  ///< the comparison; "flip" and "ssim" come later
@@ -41,6 +47,7 @@ struct rubric {
     std::filesystem::path file;
     std::string assignment, title, visibility = "after_published";
     run_limits test_limits, render_limits;
+    double total_points = 0;            ///< when > 0, what the categories and scenes must add up to
     double grade_budget_seconds = 600;  ///< the whole grade; items left when it is spent are not run
     std::vector<rubric_category> categories;
     std::vector<rubric_scene> scenes;
@@ -49,8 +56,9 @@ struct rubric {
     const rubric_category* category_of(const test_case_info& t) const;
 };
 
-/// Reads `file`; throws grader_error naming the file, line and problem.
-rubric load_rubric(const std::filesystem::path& file, bool sanitized);
+/// Reads `file` (public scenes are in `public_scenes`); throws grader_error naming the
+/// file, line and problem.
+rubric load_rubric(const std::filesystem::path& file, const std::filesystem::path& public_scenes, bool sanitized);
 
 /// Checks the rubric against the hidden tests: every test has a category, every named
 /// test exists, every category earns its points somewhere. Throws grader_error.

@@ -40,7 +40,7 @@ vl::image difference_image(const vl::image& a, const vl::image& b) {
 scene_outcome render_and_compare(const fs::path& render_program, const rubric_scene& scene, const fs::path& reference,
                                  const fs::path& renders, const run_limits& limits, const sandbox_capabilities& caps) {
     scene_outcome o;
-    const std::string stem = scene.file.stem().string();
+    const std::string stem = scene.id;
     const std::string scene_inside = "/vl/scene/" + scene.file.filename().string();
     run_request rq;
     rq.mounts = {{render_program, "/vl/bin/render", false}, {scene.file, scene_inside, false}};
@@ -48,11 +48,21 @@ scene_outcome render_and_compare(const fs::path& render_program, const rubric_sc
     rq.symlinks = {{"/proc/self/fd/3", "/scratch/out.png"}};
     rq.argv = {"/vl/bin/render", scene_inside, "-o", "/scratch/out.png", "--threads", "1"};
     rq.environment = child_environment("/scratch");
+    // Which pieces are the submission's (hidden/common/graded_pieces.cc); the others are
+    // the reference's, so the scene depends only on its own category's code.
+    if (!scene.student_pieces.empty()) {
+        std::string pieces;
+        for (const std::string& p : scene.student_pieces) pieces += (pieces.empty() ? "" : " ") + p;
+        rq.environment.push_back("VL_GRADED_PIECES=" + pieces);
+    }
     rq.limits = limits;
     rq.report_fd = true;
     const run_result r = run(rq, caps);
     o.seconds = r.seconds;
     if (!r.started) throw grader_error("the sandbox could not run the renderer: " + r.error);
+    if (r.exit_code == 120 && r.output.find("grader: VL_GRADED_PIECES") != std::string::npos)
+        throw grader_error(scene.file.string() + ": the rubric's student_pieces name a piece no stage registers: " +
+                           r.output_head(300));
     if (!r.succeeded() || r.report.empty() || r.report_overflow) {
         o.message = "the render " + (r.report_overflow ? std::string("wrote an image larger than ") +
                                                              std::to_string(limits.report_bytes >> 20) + " MiB"

@@ -235,7 +235,10 @@ prepared_submission prepare_submission(const fs::path& submission, const stage_i
             if (fs::exists(p.sources / file)) {
                 if (read_regular_file(p.sources / file, limits.source_bytes) !=
                     read_regular_file(e.path(), limits.source_bytes))
+                {
                     p.notes.push_back("your " + file.string() + " differs from the original; the original was used");
+                    p.replaced_contracts.push_back(file.string());
+                }
                 fs::remove(p.sources / file);
             }
         }

@@ -30,6 +30,7 @@ struct prepared_submission {
     std::vector<std::string> files;      ///< the .cc files in `sources`, by name
     std::string origin;                  ///< what was found where, for the report
     std::vector<std::string> notes;      ///< e.g. a contract header that was replaced
+    std::vector<std::string> replaced_contracts;  ///< contract headers the student had changed (the originals were used)
     std::vector<std::string> kit_stages; ///< a whole kit: the stages with student code in it
 };
 

@@ -68,6 +68,12 @@ TEST_CASE("policy: calls that leave the computation are refused, each with its r
     CHECK(reasons(undefined("syscall")).find("makes raw system calls") != std::string::npos);
     CHECK(reasons(undefined("__libc_write")).find("makes raw system calls") != std::string::npos);
     CHECK(reasons(undefined("setenv")).find("changes the environment") != std::string::npos);
+    CHECK(reasons(undefined("getenv")).find("reads or changes the environment") != std::string::npos);
+    CHECK(reasons(undefined("__environ")).find("the environment") != std::string::npos);
+    CHECK(reasons(undefined("program_invocation_name")).find("the environment") != std::string::npos);
+    CHECK(reasons(undefined("_ZN2vl17reference_stage0211make_sphereERKNS_5pointEd",
+                            "vl::reference_stage02::make_sphere(vl::point const&, double)"))
+              .find("calls the reference solution") != std::string::npos);
     CHECK(reasons(undefined("_ZN5Catch9SessionC1Ev", "Catch::Session::Session()")).find("test framework") != std::string::npos);
     // glibc's public aliases of the same calls
     CHECK(reasons(undefined("__write")).find("opens or writes files") != std::string::npos);

@@ -62,6 +62,13 @@ public:
     /// The tracer `name` for `s`; throws vl::usage_error when it is not registered.
     std::unique_ptr<tracer> make_tracer(std::string_view name, const scene& s) const;
 
+    /// True when a camera is set.
+    bool has_camera() const { return static_cast<bool>(camera_); }
+    /// Every bound sample pattern's name, sorted.
+    std::vector<std::string> sampler_names() const;
+    /// Every bound tracer's name, sorted.
+    std::vector<std::string> tracer_names() const;
+
 private:
     std::map<std::string, factory, std::less<>> factories_;
     camera_factory camera_;

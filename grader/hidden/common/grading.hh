@@ -26,6 +26,7 @@
 #include <cmath>
 #include <string>
 
+#include "vl/ray.hh"
 #include "vl/tuples_based.hh"
 
 namespace vl::grading {
