@@ -3,6 +3,7 @@
 /// \brief Running Catch2 test programs one test case per process, and reading only what
 /// Catch2's XML reporter wrote to a pipe the grader gave it (never the program's output).
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,11 @@ const char* to_string(test_outcome::status s);
 /// is wrong, and no student should lose points for it).
 std::vector<test_case_info> list_trusted_tests(const std::filesystem::path& program, const std::filesystem::path& work,
                                                const sandbox_capabilities& caps);
+
+/// Runs the graded tests linked with the untouched stubs (`program`) and returns the names
+/// of those that pass: they check what the kit already supplies, and earn nothing.
+std::set<std::string> tests_passing_on_stubs(const std::filesystem::path& program, const std::filesystem::path& work,
+                                             const sandbox_capabilities& caps);
 
 /// Runs the test case `name` of `program` alone, in a sandbox of its own.
 /// A report counts only when the test case in it is `test` as the trusted program knows it

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <ctime>
 #include <map>
+#include <set>
 
 #include "build_submission.hh"
 #include "catch_runner.hh"
@@ -105,7 +106,11 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
 
     // The expected tests come from the trusted build, never from the submission's.
     std::vector<test_case_info> tests;
-    if (!stage.trusted_tests.empty()) tests = list_trusted_tests(stage.trusted_tests, work / "trusted", caps);
+    std::set<std::string> kit_passes;
+    if (!stage.trusted_tests.empty()) {
+        tests = list_trusted_tests(stage.trusted_tests, work / "trusted", caps);
+        if (!stage.tests_on_stubs.empty()) kit_passes = tests_passing_on_stubs(stage.tests_on_stubs, work / "stubs", caps);
+    }
     check_rubric(r, tests);
 
     // The items, in rubric order, all "not run" until they run.
@@ -121,7 +126,11 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
         for (const test_case_info& t : tests)
             if (r.category_of(t) == &c) mine.push_back(&t);
         std::vector<double> weights;
-        for (const test_case_info* t : mine) weights.push_back(c.weight_of(*t));
+        // A test the untouched stubs pass checks what the kit supplies: it weighs nothing.
+        for (const test_case_info* t : mine) weights.push_back(kit_passes.contains(t->name) ? 0 : c.weight_of(*t));
+        if (c.points > 0 && !mine.empty() && std::all_of(weights.begin(), weights.end(), [](double w) { return w == 0; }))
+            throw grader_error(r.file.string() + ": every test of category '" + c.name +
+                               "' weighs 0 or passes with the untouched stubs: its points cannot be earned");
         const std::vector<long long> share = shares(c.points, weights);
         for (std::size_t k = 0; k < mine.size(); ++k) {
             graded_item i;
@@ -131,6 +140,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             i.tags = mine[k]->tags;
             i.max_units = share[k];
             i.test = *mine[k];
+            i.kit_passes = kit_passes.contains(mine[k]->name);
             g.items.push_back(i);
         }
         for (const rubric_scene& s : r.scenes) {
@@ -181,6 +191,9 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                                                : run_test_case(b.tests_program, i.test, limits, caps);
                     i.result = to_string(o.result);
                     i.message = o.message;
+                    if (i.kit_passes && i.message.empty())
+                        i.message = "the untouched stubs pass this test too (it checks what the kit supplies), "
+                                    "so it is worth no points";
                     i.seconds = o.seconds;
                 } else {
                     const rubric_scene& s = *std::find_if(r.scenes.begin(), r.scenes.end(), [&](const rubric_scene& x) {

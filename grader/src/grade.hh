@@ -24,6 +24,7 @@ struct graded_item {
     double seconds = 0;
     std::filesystem::path image, reference_image, difference_image;  ///< scenes only
     test_case_info test;                                              ///< tests only: as the trusted program lists it
+    bool kit_passes = false;  ///< tests only: the untouched stubs pass it, so it is worth 0
     bool passed() const { return result == "passed"; }
 };
 

@@ -63,6 +63,7 @@ installation load_installation() {
             info.name = std::string(key.str());
             info.number = str(s, "number");
             info.trusted_tests = str(s, "trusted_tests");
+            info.tests_on_stubs = str(s, "tests_on_stubs");
             info.reference_library = str(s, "reference_library");
             info.oracle_library = str(s, "oracle_library");
             info.hidden_objects = paths(s, "hidden_objects");

@@ -22,6 +22,7 @@ struct stage_info {
     std::string name;                    ///< "02-sphere"
     std::string number;                  ///< "02"
     std::filesystem::path trusted_tests; ///< hidden tests linked with the reference (empty: none)
+    std::filesystem::path tests_on_stubs; ///< the same tests linked with the untouched stubs
     std::filesystem::path reference_library;          ///< the stage's reference, a static library
     std::filesystem::path oracle_library;             ///< the same, in namespace vl::reference_stageNN
     std::vector<std::filesystem::path> hidden_objects;  ///< the hidden tests, compiled

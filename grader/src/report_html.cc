@@ -131,6 +131,7 @@ std::string report_html(const graded_submission& g) {
             if (i.category != c.name) continue;
             h << "<tr><td>" << badge(i.result) << "</td><td>" << escape(i.name);
             if (!i.passed() && !i.message.empty() && g.built) h << "<pre>" << escape(i.message) << "</pre>";
+            if (i.passed() && i.kit_passes) h << "<br><small>" << escape(i.message) << "</small>";
             if (i.what == graded_item::kind::scene && g.built) {
                 if (i.passed()) h << "<br><small>" << escape(i.message) << "</small>";
                 h << "<div class=\"figures\">" << image_tag(i.image, "this submission")

@@ -52,7 +52,7 @@ std::string results_json(const graded_submission& g) {
             if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
         t["tags"] = tags;
         t["visibility"] = i.visibility;
-        t["output"] = i.passed() ? std::string() : i.result + (i.message.empty() ? "" : ": " + i.message);
+        t["output"] = i.passed() ? i.message : i.result + (i.message.empty() ? "" : ": " + i.message);
         t["extra_data"] = {{"category", i.category}, {"result", i.result}, {"seconds", tidy(i.seconds)}};
         tests.push_back(t);
     }
