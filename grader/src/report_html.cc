@@ -1,12 +1,13 @@
 #include "report_html.hh"
 
-#include "safe_files.hh"
-
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <sstream>
+
+#include "safe_files.hh"
 
 namespace vl::grader {
 
@@ -130,6 +131,8 @@ std::string report_html(const graded_submission& g) {
         for (const graded_item& i : g.items) {
             if (i.category != c.name) continue;
             h << "<tr><td>" << badge(i.result) << "</td><td>" << escape(i.name);
+            if (std::find(i.tags.begin(), i.tags.end(), "public") != i.tags.end())
+                h << " <small>(a public test: in your tests/)</small>";
             if (!i.passed() && !i.message.empty() && g.built) h << "<pre>" << escape(i.message) << "</pre>";
             if (i.passed() && i.kit_passes) h << "<br><small>" << escape(i.message) << "</small>";
             if (i.what == graded_item::kind::scene && g.built) {
