@@ -1,221 +1,386 @@
-// Hidden tests of stage 02's plane (grader only; students never see this file). Each
-// TEST_CASE is one graded item; the tag [planes] puts it in the rubric's "planes" category.
+// Hidden tests of stage 02's plane (plane.cc). Each TEST_CASE is one graded item; the tag
+// [plane] puts it in the rubric's "planes" category. Every expected answer comes from the
+// long-double formulas in hidden_support.hh, never from another of your objects.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <limits>
-#include <sstream>
+#include <string>
+#include <vector>
 
 #include "hidden_support.hh"
-#include "vl/error.hh"
 
 using vl::intersection;
 using vl::point;
+using vl::primitive;
 using vl::ray;
+using vl::rtab_component;
 using vl::vector;
 using vl::stage02::make_plane;
 using namespace vl::stage02::hidden;
 
-TEST_CASE("plane: a slanted ray meets a tilted plane where the plane equation says", "[02][plane][planes][essential]") {
-    const point p0(1, -2, 0.5);
-    const vector n(2, 3, -1);  // not unit
-    const auto pl = make_plane(p0, n);
-    sampler random(11);
-    int wrong = 0, off_plane = 0;
-    for (int k = 0; k < 500; ++k) {
-        const point origin = random.in_box(10);
-        const ray r(origin, random.direction());
-        const double denominator = r.direction() * n;
-        if (std::fabs(denominator) < 1e-3) continue;
-        const double expected = ((p0 - origin) * n) / denominator;
-        const intersection i = pl->intersect(r);
-        if (expected > 1e-3) {
-            if (!clean_hit(i, pl.get()) || std::fabs(i.t - expected) > 1e-9 * (1 + expected)) ++wrong;
-            else if (std::fabs((r.t_point(i.t) - p0) * n.unit()) > 1e-9 * (1 + expected)) ++off_plane;
-        } else if (expected < -1e-3 && !clean_miss(i)) {
-            ++wrong;
+namespace {
+
+bool all_nan(const point& p) { return std::isnan(p.x) && std::isnan(p.y) && std::isnan(p.z); }
+
+struct flat {
+    point on;
+    vector normal;
+};
+
+std::string describe(const flat& p) { return "the plane through " + show(p.on) + " with normal " + show(p.normal); }
+
+// 1e-12 of the size of the numbers involved, over the cosine of the angle of incidence.
+double tolerance_of(const flat& p, const ray& r, double t) {
+    const double cosine = std::fabs(r.direction() * p.normal.unit());
+    return 1e-12 * ((r.origin() - p.on).length() + std::fabs(t)) / std::max(cosine, 1e-3);
+}
+
+void check_ray(tally& t, const primitive& pl, const flat& p, const ray& r) {
+    const double exact = static_cast<double>(plane_oracle(p.on, p.normal, r));
+    const bool hits = std::isfinite(exact) && exact > std::fabs(pl.zero_t());
+    const double tol = hits ? tolerance_of(p, r, exact) : 0;
+    const intersection i = pl.intersect(r);
+    const std::string side = (r.origin() - p.on) * p.normal > 0 ? " (from the front)" : " (from behind)";
+    if (hits)
+        t.check(hit_near(i, &pl, exact, tol), [&] {
+            return show(r) + side + " should hit " + describe(p) + " at t = " + num(exact) + " ± " + num(tol) +
+                   "; yours returned " + show(i, &pl);
+        });
+    else
+        t.check(clean_miss(i), [&] { return show(r) + side + " should miss " + describe(p) + "; yours returned " + show(i, &pl); });
+}
+
+const std::vector<flat> planes = {
+    {point(0, -1, 0), vector(0, 2, 0)},
+    {point(1, -2, 0.5), vector(2, 3, -1)},
+    {point(-30, 7.5, 12), vector(-0.1, 0.02, 0.3)},
+    {point(250, -40, 120), vector(4e3, 1e3, -2e3)},
+};
+
+// `got` answers like `want`, the same plane made another way: normals, no inside, no
+// box, and the same hits for rays that cross it at a clear angle.
+void check_same_plane(tally& t, const rtab_component& got, const primitive& want, const flat& p, const std::string& who) {
+    t.check(got.type_name() == "PLANE", [&] { return who + "'s type_name() is \"" + got.type_name() + "\", not \"PLANE\""; });
+    const point lo = got.min_point(), hi = got.max_point();
+    t.check(all_nan(lo) && all_nan(hi),
+            [&] { return who + "'s box should be NaN_point (a plane is unbounded); yours runs from " + show(lo) + " to " + show(hi); });
+    sampler random(301);
+    const vector n = p.normal.unit();
+    vector u, v;
+    plane_axes(n, u, v);
+    const double size = std::fabs(p.on.x) + std::fabs(p.on.y) + std::fabs(p.on.z) + 1;
+    for (int k = 0; k < 40; ++k) {
+        const point q = p.on + random.uniform(-10, 10) * u + random.uniform(-10, 10) * v;
+        const vector gn = got.normal(q), wn = want.normal(q);
+        t.check((gn - wn).length() <= 4e-15, [&] {
+            return who + ".normal(" + show(q) + ") is " + show(gn) + " where the plane's is " + show(wn) + " (± 4e-15)";
+        });
+        const point off = q + random.uniform(-5, 5) * n;
+        t.check(!got.contains(off), [&] { return who + ".contains(" + show(off) + ") should be false (a plane has no inside)"; });
+        vector d = random.direction();
+        if (std::fabs(d * n) < 0.2) d = d + 0.5 * n;
+        const point from = q + random.uniform(0.5, 20) * (k % 2 == 0 ? n : -n);
+        const ray r(from, d);
+        const intersection i = got.intersect(r), j = want.intersect(r);
+        const double tol = tolerance_of(p, r, j.t) + 16 * std::numeric_limits<double>::epsilon() * size;
+        const bool same = (i.hit() && j.hit() && std::fabs(i.t - j.t) <= tol && i.object == &got) ||
+                          (clean_miss(i) && clean_miss(j));
+        t.check(same, [&] {
+            return show(r) + ": " + who + " returned " + show(i, &got) + " where the plane returned " + show(j, &want) + " (± " +
+                   num(tol) + ")";
+        });
+    }
+}
+
+}  // namespace
+
+// --- hits and misses ---------------------------------------------------------------------
+
+TEST_CASE("plane: rays from either side meet a tilted plane where the plane equation says", "[02][plane][hits][essential]") {
+    tally t("rays towards a plane");
+    sampler random(311);
+    for (const flat& p : planes) {
+        const auto pl = make_plane(p.on, p.normal);
+        const vector n = p.normal.unit();
+        for (int k = 0; k < 300; ++k) {
+            // From the front on even k, from behind on odd k, towards a point of the plane.
+            vector u, v;
+            plane_axes(n, u, v);
+            const point target = p.on + random.uniform(-50, 50) * u + random.uniform(-50, 50) * v;
+            const point from = target + random.uniform(0.01, 30) * (k % 2 == 0 ? n : -n) + random.jitter(20);
+            if (std::fabs(((target - from).unit()) * n) < 0.05) continue;
+            check_ray(t, *pl, p, through(from, target));
         }
     }
-    CHECK(wrong == 0);
-    CHECK(off_plane == 0);
+    t.report();
 }
 
-TEST_CASE("plane: a plane that lies behind the ray is never reported at a negative distance", "[02][plane][planes]") {
-    sampler random(12);
-    int reported = 0;
+TEST_CASE("plane: a plane behind the ray, or one the ray moves away from, is not hit", "[02][plane][misses][essential]") {
+    tally t("rays moving away from a plane");
+    sampler random(312);
     for (int k = 0; k < 1000; ++k) {
-        const point p0 = random.in_box(5);
-        const vector n = random.direction();
-        const auto pl = make_plane(p0, n);
-        // The origin on one side, the direction pointing further away from the plane.
+        const flat p{random.in_box(5), random.direction() * random.uniform(0.1, 10)};
+        const auto pl = make_plane(p.on, p.normal);
+        const vector n = p.normal.unit();
         const double side = k % 2 == 0 ? 1 : -1;
-        const point origin = p0 + side * random.uniform(0.01, 50) * n;
+        const point origin = p.on + side * random.uniform(0.01, 50) * n + random.jitter(30);
+        const double height = (origin - p.on) * n;
         vector d = random.direction();
-        if ((d * n) * side < 0) d = -d;
+        if ((d * n) * height < 0) d = -d;
         if (std::fabs(d * n) < 1e-3) continue;
-        if (!clean_miss(pl->intersect(ray(origin, d)))) ++reported;
+        check_ray(t, *pl, p, ray(origin, d));
     }
-    CHECK(reported == 0);
+    t.report();
 }
 
-TEST_CASE("plane: rays exactly parallel to a plane miss cleanly with no NaN and no infinity", "[02][plane][planes]") {
+TEST_CASE("plane: rays exactly parallel to the plane, beside it or lying in it, miss with no NaN and no infinity", "[02][plane][parallel][essential]") {
     // Normals and directions chosen so that d . n is exactly 0 in floating point.
-    struct parallel_case {
+    const struct {
         point on;
         vector normal, direction;
-    };
-    const parallel_case cases[] = {
+    } cases[] = {
         {point(0, 0, 0), vector(0, 1, 0), vector(1, 0, 0)},
         {point(3, -2, 7), vector(0, 0, -5), vector(1, 2, 0)},
         {point(-1, 4, 2), vector(1, 1, 0), vector(1, -1, 3)},
         {point(2, 2, 2), vector(0, 2, 2), vector(4, 1, -1)},
         {point(1e6, -1e6, 5), vector(7, 0, 0), vector(0, -1, 1)},
+        {point(0, -3, 0), vector(0, 4, 0), vector(-1e-3, 0, 1e3)},
     };
-    int wrong = 0;
-    std::ostringstream first;
-    for (const parallel_case& c : cases) {
+    tally t("rays parallel to a plane");
+    for (const auto& c : cases) {
         const auto pl = make_plane(c.on, c.normal);
-        // Above, below and inside the plane, some far from the point it was given by.
+        const vector across = (c.direction % c.normal).unit();
         for (const double offset : {2.0, -2.0, 1e-9, -1e-9, 0.0}) {
-            const point origin = c.on + offset * c.normal.unit() + 100 * (c.direction % c.normal).unit();
-            const intersection i = pl->intersect(ray(origin, c.direction));
-            if (clean_miss(i)) continue;
-            if (wrong++ == 0)
-                first << "normal " << c.normal << " direction " << c.direction << " offset " << offset << ": t = " << i.t;
+            for (const double shift : {0.0, 100.0}) {
+                const point origin = c.on + offset * c.normal.unit() + shift * across;
+                const ray r(origin, c.direction);
+                const intersection i = pl->intersect(r);
+                t.check(clean_miss(i), [&] {
+                    return show(r) + " runs parallel to " + describe({c.on, c.normal}) +
+                           (offset == 0 ? " in it" : " beside it") + ": it should miss; yours returned " + show(i, pl.get());
+                });
+            }
         }
     }
-    INFO("the first ray that did not miss: " << first.str());
-    CHECK(wrong == 0);
+    t.report();
 }
 
-TEST_CASE("plane: a ray lying in the plane is not reported for any of its points", "[02][plane][planes]") {
-    const auto floor = make_plane(point(0, -3, 0), vector(0, 4, 0));
-    int wrong = 0;
-    std::ostringstream first;
-    for (const vector d : {vector(1, 0, 0), vector(0, 0, -1), vector(3, 0, 4), vector(-1e-3, 0, 1e3)}) {
-        const intersection i = floor->intersect(ray(point(17, -3, -5), d));
-        if (!clean_miss(i) && wrong++ == 0) first << "direction " << d << ": t = " << i.t;
+TEST_CASE("plane: rays that start on the plane do not hit it again, whatever the sign of zero_t", "[02][plane][surface]") {
+    tally t("rays leaving a plane");
+    sampler random(313);
+    for (const double zero_t : {1e-6, -1e-6}) {
+        for (const flat& p : planes) {
+            const auto pl = make_plane(p.on, p.normal);
+            vl::surface s;
+            s.zero_t = zero_t;
+            pl->set_surface(s);
+            const vector n = p.normal.unit();
+            vector u, v;
+            plane_axes(n, u, v);
+            for (int k = 0; k < 500; ++k) {
+                const point on = p.on + random.uniform(-500, 500) * u + random.uniform(-500, 500) * v;
+                vector d = random.direction();
+                if (k % 2 == 0) {  // grazing: 1e-4 to 0.1 radians off the plane
+                    const double angle = std::pow(10.0, random.uniform(-4, -1)) * (k % 4 == 0 ? 1 : -1);
+                    const double turn = random.uniform(0, 2 * std::numbers::pi);
+                    d = std::cos(angle) * (std::cos(turn) * u + std::sin(turn) * v) + std::sin(angle) * n;
+                }
+                const ray r(on, d);
+                const intersection i = pl->intersect(r);
+                t.check(clean_miss(i), [&] {
+                    return show(r) + " starts on " + describe(p) + " (zero_t = " + num(zero_t) +
+                           "): it should not hit it again; yours returned " + show(i, pl.get());
+                });
+            }
+        }
     }
-    INFO("the first ray that did not miss: " << first.str());
-    CHECK(wrong == 0);
+    t.report();
 }
 
-TEST_CASE("plane: rays leaving a plane far from its given point at grazing angles do not hit it again", "[02][plane][planes]") {
-    const point p0(250, -40, 120);
-    const vector n = vector(0.2, 1, 0.35).unit();
-    const auto pl = make_plane(p0, n);
+TEST_CASE("plane: zero_t, positive or negative, hides a hit up to its absolute value", "[02][plane][zero_t]") {
+    tally t("a plane hit at t = 0.3 with different zero_t");
+    const flat p{point(0, -0.3, 0), vector(0, 1, 0)};
+    const auto pl = make_plane(p.on, p.normal);
+    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
+        vl::surface s;
+        s.zero_t = zero_t;
+        pl->set_surface(s);
+        for (const double direction : {-1.0, 1.0}) {
+            const ray r(point(0, -0.3 - direction * 0.3, 0), vector(0, direction, 0));
+            const bool want = 0.3 > std::fabs(zero_t);
+            const intersection i = pl->intersect(r);
+            t.check(want ? hit_near(i, pl.get(), 0.3, 1e-12) : clean_miss(i), [&] {
+                return show(r) + " meets " + describe(p) + " at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
+                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, pl.get());
+            });
+        }
+    }
+    t.report();
+}
+
+TEST_CASE("plane: a ray a hair below the horizon hits far away and a hair above it misses", "[02][plane][grazing]") {
+    tally t("nearly parallel rays");
+    const flat p{point(0, 0, 0), vector(0, 1, 0)};
+    const auto ground = make_plane(p.on, p.normal);
+    for (const double slope : {1e-3, 1e-5, 1e-8, 1e-11}) {
+        check_ray(t, *ground, p, ray(point(0, 2, 0), vector(1, -slope, 0)));
+        check_ray(t, *ground, p, ray(point(0, 2, 0), vector(1, slope, 0)));
+        check_ray(t, *ground, p, ray(point(0, -2, 0), vector(-1, slope, 0.5)));
+    }
+    t.report();
+}
+
+TEST_CASE("plane: a plane a million units away is met with full relative precision", "[02][plane][far]") {
+    tally t("rays at a far plane");
+    const vector n = vector(-0.3, 0.2, 1).unit();
+    const flat p{point(0, 0, 0) + 1e6 * vector(0.1, -0.05, -1).unit(), n};
+    const auto pl = make_plane(p.on, p.normal);
+    sampler random(314);
     vector u, v;
     plane_axes(n, u, v);
-    sampler random(13);
-    int self_hits = 0;
-    for (int k = 0; k < 3000; ++k) {
-        const point origin = p0 + random.uniform(-500, 500) * u + random.uniform(-500, 500) * v;
-        const double angle = std::pow(10.0, random.uniform(-4, -1)) * (k % 2 == 0 ? 1 : -1);
-        const double turn = random.uniform(0, 2 * std::numbers::pi);
-        const vector along = std::cos(turn) * u + std::sin(turn) * v;
-        const vector d = std::cos(angle) * along + std::sin(angle) * n;
-        if (!clean_miss(pl->intersect(ray(origin, d)))) ++self_hits;
-    }
-    CHECK(self_hits == 0);
-}
-
-TEST_CASE("plane: a plane a million units away is met with full relative precision", "[02][plane][planes]") {
-    const vector n = vector(-0.3, 0.2, 1).unit();
-    const point p0 = point(0, 0, 0) + 1e6 * vector(0.1, -0.05, -1).unit();
-    const auto pl = make_plane(p0, n);
-    sampler random(14);
-    int wrong = 0;
     for (int k = 0; k < 200; ++k) {
-        const point target = p0 + random.uniform(-1e4, 1e4) * (n % vector(1, 0, 0)).unit() +
-                             random.uniform(-1e4, 1e4) * (n % vector(0, 1, 0)).unit();
-        const ray r = through(point(0, 0, 0), target);
-        const double expected = (target - point(0, 0, 0)).length();
-        const intersection i = pl->intersect(r);
-        if (!clean_hit(i, pl.get()) || std::fabs(i.t - expected) > 1e-10 * expected) ++wrong;
+        const point target = p.on + random.uniform(-1e4, 1e4) * u + random.uniform(-1e4, 1e4) * v;
+        check_ray(t, *pl, p, through(point(0, 0, 0), target));
     }
-    CHECK(wrong == 0);
+    t.report();
 }
 
-TEST_CASE("plane: a ray a hair below the horizon hits far away and a hair above it misses", "[02][plane][planes]") {
-    const auto ground = make_plane(point(0, 0, 0), vector(0, 1, 0));
-    int wrong = 0;
-    std::ostringstream first;
-    for (const double slope : {1e-5, 1e-8, 1e-11}) {
-        const intersection down = ground->intersect(ray(point(0, 2, 0), vector(1, -slope, 0)));
-        const intersection up = ground->intersect(ray(point(0, 2, 0), vector(1, slope, 0)));
-        const bool right = clean_hit(down, ground.get()) && std::fabs(down.t - 2 / slope) <= 1e-6 * (2 / slope) &&
-                           clean_miss(up);
-        if (!right && wrong++ == 0)
-            first << "slope " << slope << ": below t = " << down.t << " (should be " << 2 / slope << "), above t = " << up.t
-                  << " (should miss)";
+// --- normal, contains, bounds -------------------------------------------------------------
+
+TEST_CASE("plane: its normal is the given one made unit, everywhere and also after rays from behind", "[02][plane][normals][essential]") {
+    tally t("normals");
+    sampler random(315);
+    std::vector<flat> all = planes;
+    all.push_back({point(0, 0, 0), vector(0, 1e-3, 0)});
+    all.push_back({point(5, 5, 5), vector(3e4, -4e4, 0)});
+    all.push_back({point(1, 2, 3), vector(0, 0, -3)});
+    for (const flat& p : all) {
+        const auto pl = make_plane(p.on, p.normal);
+        for (int k = 0; k < 20; ++k) {
+            if (k == 10) {  // rays from behind must not change it
+                const vector n = p.normal.unit();
+                for (int j = 0; j < 5; ++j) pl->intersect(ray(p.on - 3 * n + random.jitter(1), n));
+            }
+            const point q = random.in_box(100);
+            const vector got = pl->normal(q);
+            const double gap = unit_gap(got, p.normal);
+            t.check(gap <= 4e-16 * 4, [&] {
+                return "the normal of " + describe(p) + " at " + show(q) + " should be " + show(p.normal.unit()) +
+                       " (± 1.6e-15, the given normal made unit); yours is " + show(got);
+            });
+        }
+        const point off = p.on + p.normal;
+        t.check(!pl->contains(off) && !pl->contains(p.on - p.normal),
+                [&] { return describe(p) + ".contains() should be false everywhere (a plane has no inside)"; });
+        t.check(all_nan(pl->min_point()) && all_nan(pl->max_point()), [&] {
+            return "the box of " + describe(p) + " should be NaN_point (unbounded); yours runs from " + show(pl->min_point()) +
+                   " to " + show(pl->max_point());
+        });
     }
-    INFO("the first wrong answer: " << first.str());
-    CHECK(wrong == 0);
+    t.report();
 }
 
-TEST_CASE("plane: its normal is the given direction scaled to length one at every point", "[02][plane][planes]") {
-    const auto tiny = make_plane(point(0, 0, 0), vector(0, 1e-3, 0));
-    const auto big = make_plane(point(5, 5, 5), vector(3e4, -4e4, 0));
-    sampler random(15);
-    int wrong = 0, inside = 0;
-    for (int k = 0; k < 20; ++k) {
-        const point p = random.in_box(100);
-        const vector a = tiny->normal(p), b = big->normal(p);
-        if ((a - vector(0, 1, 0)).length() > 1e-15 || (b - vector(0.6, -0.8, 0)).length() > 1e-14) ++wrong;
-        if (big->contains(p) || tiny->contains(p)) ++inside;
-    }
-    INFO("normals at the origin: " << tiny->normal(point(0, 0, 0)) << " (should be (0, 1, 0)) and "
-                                    << big->normal(point(0, 0, 0)) << " (should be (0.6, -0.8, 0))");
-    CHECK(wrong == 0);
-    CHECK(inside == 0);
-}
+// --- the factory and scene files ----------------------------------------------------------
 
-TEST_CASE("plane: an unbounded plane reports NaN for every coordinate of its box", "[02][plane][planes]") {
-    const auto pl = make_plane(point(1, 2, 3), vector(0, 0, 1));
-    const point lo = pl->min_point(), hi = pl->max_point();
-    CHECK(std::isnan(lo.x));
-    CHECK(std::isnan(lo.y));
-    CHECK(std::isnan(lo.z));
-    CHECK(std::isnan(hi.x));
-    CHECK(std::isnan(hi.y));
-    CHECK(std::isnan(hi.z));
-}
-
-TEST_CASE("plane: make_plane refuses a normal or a point that is not finite", "[02][plane][planes]") {
+TEST_CASE("plane: make_plane refuses a zero normal and any coordinate that is not finite", "[02][plane][refusals]") {
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
-    CHECK_THROWS_AS(make_plane(point(0, 0, 0), vector(nan, 1, 0)), vl::usage_error);
-    CHECK_THROWS_AS(make_plane(point(0, 0, 0), vector(0, inf, 0)), vl::usage_error);
-    CHECK_THROWS_AS(make_plane(point(inf, 0, 0), vector(0, 1, 0)), vl::usage_error);
-    CHECK_THROWS_AS(make_plane(point(0, nan, 0), vector(0, 1, 0)), vl::usage_error);
-    CHECK_NOTHROW(make_plane(point(0, 0, 0), vector(1e-5, 0, 0)));
-}
-
-TEST_CASE("plane: an empty PLANE in a scene file is the floor through the origin facing up", "[02][plane][planes][detail]") {
-    const auto pl = read_one("PLANE { }");
-    const intersection i = pl->intersect(ray(point(3, 1.5, -2), vector(0, -1, 0)));
-    REQUIRE(clean_hit(i, pl.get()));
-    CHECK(i.t == Approx(1.5).epsilon(1e-12));
-    CHECK(pl->normal(point(3, 0, -2)) == vector(0, 1, 0));
-}
-
-TEST_CASE("plane: a PLANE written by write reads back with the same point and normal and surface", "[02][plane][planes]") {
-    const auto first = read_one("PLANE { point 0.1 -2.7 1e3 normal 1 -3 0.25 color 0.2 0.4 0.6 zero_t 1e-5 }");
-    const std::string out = text_of(*first);
-    INFO("write() gave: " << out);
-    const auto second = read_one(out);
-    CHECK(second->type_name() == "PLANE");
-    CHECK(text_of(*second) == out);
-    CHECK(second->clr() == first->clr());
-    CHECK(second->zero_t() == first->zero_t());
-    CHECK(second->normal(point(0, 0, 0)) == first->normal(point(0, 0, 0)));
-    sampler random(16);
-    int differ = 0, hits = 0;
-    for (int k = 0; k < 100; ++k) {
-        const ray r(random.in_box(50), random.direction());
-        const intersection a = first->intersect(r), b = second->intersect(r);
-        if (a.hit() != b.hit() || a.t != b.t) ++differ;
-        if (a.hit()) ++hits;
+    tally t("make_plane with input that is not a plane");
+    for (const vector& n : {vector(0, 0, 0), vector(-0.0, 0, -0.0), vector(nan, 1, 0), vector(0, inf, 0), vector(0, 0, -inf)})
+        expect_usage_error(t, "make_plane((0, 0, 0), " + show(n) + ")", [&] { return make_plane(point(0, 0, 0), n); });
+    for (const point& q : {point(inf, 0, 0), point(0, nan, 0), point(0, 0, -inf), point(1, 2, 3, 0)})
+        expect_usage_error(t, "make_plane(point(" + num(q.x) + ", " + num(q.y) + ", " + num(q.z) + ", " + num(q.w) + "), (0, 1, 0))",
+                           [&] { return make_plane(q, vector(0, 1, 0)); });
+    // Short and long normals are fine: the plane is made and hit.
+    for (const flat& p : {flat{point(0, 0, 0), vector(1e-5, 0, 0)}, flat{point(1, 2, 3), vector(0, -1e5, 1e5)}}) {
+        const auto pl = make_plane(p.on, p.normal);
+        check_ray(t, *pl, p, ray(p.on + 2 * p.normal.unit(), -p.normal));
     }
-    CHECK(differ == 0);
-    CHECK(hits > 10);
+    t.report();
+}
+
+TEST_CASE("plane: a PLANE in a scene file is the plane its point, normal and surface keys describe", "[02][plane][scene_io]") {
+    tally t("PLANE read from a scene file");
+    const flat p{point(0.1 + 1e-13, -1.0 / 3, 7.25), vector(1.0 / 3, -2, 0.5 + 1e-12)};
+    const vl::surface surf = full_precision_surface(-1e-7 / 3);
+    const std::string text = "PLANE { normal " + num(p.normal.x) + " " + num(p.normal.y) + " " + num(p.normal.z) + " point (" +
+                             num(p.on.x) + ", " + num(p.on.y) + ", " + num(p.on.z) + ") color " + num(surf.clr.r) + " " +
+                             num(surf.clr.g) + " " + num(surf.clr.b) + " " + num(surf.clr.a) + " kdr " + num(surf.kdr) +
+                             " ksr " + num(surf.ksr) + " kdt " + num(surf.kdt) + " kst " + num(surf.kst) + " n " +
+                             num(surf.n) + " ior " + num(surf.ior) + " zero_t " + num(surf.zero_t) + " }";
+    const auto got = read_one(text);
+    const auto want = make_plane(p.on, p.normal);
+    want->set_surface(surf);
+    compare_surface(surface_of(*got), surf, "the PLANE read from " + text, t);
+    check_same_plane(t, *got, *want, p, "the PLANE read from " + text);
+    t.report();
+}
+
+TEST_CASE("plane: a bad PLANE in a scene file is refused at the value at fault, a good one is read", "[02][plane][scene_io][detail]") {
+    tally t("PLANE blocks in scene files");
+    const struct {
+        const char* text;
+        const char* where;
+    } bad[] = {{"PLANE { normal 0 0 0 }", "hidden.ray_trace:1:16"},
+               {"PLANE {\n  point 1 2 3\n  normal (0, 0, 0)\n}", "hidden.ray_trace:3:10"},
+               {"PLANE { point (1, 2, 3, 0) }", "hidden.ray_trace:1:15"}};
+    for (const auto& c : bad) {
+        const std::string message = read_error(c.text);
+        t.check(message.find(c.where) != std::string::npos, [&] {
+            return std::string("reading \"") + c.text + "\" should fail with a vl::file_error at " + c.where + "; it gave: " +
+                   message;
+        });
+    }
+    const auto good = read_one("PLANE { point 0 -1 0 normal 0 0 2 }");
+    const auto want = make_plane(point(0, -1, 0), vector(0, 0, 2));
+    check_same_plane(t, *good, *want, {point(0, -1, 0), vector(0, 0, 2)}, "PLANE { point 0 -1 0 normal 0 0 2 }");
+    t.report();
+}
+
+TEST_CASE("plane: an empty PLANE block is the floor y = 0 facing up with the default surface", "[02][plane][scene_io][detail]") {
+    tally t("PLANE { }");
+    const auto got = read_one("PLANE { }");
+    const auto want = make_plane(point(0, 0, 0), vector(0, 1, 0));
+    compare_surface(surface_of(*got), vl::surface{}, "PLANE { }", t);
+    check_same_plane(t, *got, *want, {point(0, 0, 0), vector(0, 1, 0)}, "PLANE { }");
+    t.report();
+}
+
+TEST_CASE("plane: write() keeps every digit of the plane and of each surface key", "[02][plane][scene_io]") {
+    tally t("write() of a PLANE read back");
+    for (const flat& p : {flat{point(0.1 + 1e-13, -1.0 / 3, 2.0 / 3 + 1e-12), vector(1.0 / 3, 1e-7, -0.7 + 1e-14)},
+                          flat{point(123456.789012345, 1e-7, -1.0 / 7), vector(-2.0 / 3, 123.456789012345, 1.0 / 7)}}) {
+        const auto original = make_plane(p.on, p.normal);
+        original->set_surface(full_precision_surface(-1e-9 / 3));
+        const std::string text = text_of(*original);
+        const std::string who = "write() of " + describe(p) + " gave \"" + text + "\", which";
+        const written_object w = parse_written(text);
+        t.check(w.problem.empty() && w.type == "PLANE" && w.one_object, [&] {
+            return who + " should be one PLANE { ... }; " + (w.problem.empty() ? "it is not" : w.problem);
+        });
+        if (w.problem.empty()) {
+            // The same plane: the normal's direction to a few ulps, the point on it.
+            const std::vector<double> q = w.keys.at("point"), m = w.keys.at("normal");
+            const vector written_normal(m[0], m[1], m[2]);
+            const double gap = unit_gap(written_normal.unit(), p.normal);
+            t.check(gap <= 4 * std::numeric_limits<double>::epsilon(), [&] {
+                return who + " has a normal of direction " + show(written_normal.unit()) + "; it should be " +
+                       show(p.normal.unit()) + " (± 4 ulps)";
+            });
+            const point written_point(q[0], q[1], q[2]);
+            const double size = std::fabs(p.on.x) + std::fabs(p.on.y) + std::fabs(p.on.z) + std::fabs(q[0]) +
+                                std::fabs(q[1]) + std::fabs(q[2]);
+            const double off = std::fabs(static_cast<double>(dot(to_r(written_point) - to_r(p.on), unit(to_r(p.normal)))));
+            const double allowed = 8 * std::numeric_limits<double>::epsilon() * size;
+            t.check(off <= allowed, [&] {
+                return who + " has the point " + show(written_point) + ", " + num(off) + " away from the plane (allowed: " +
+                       num(allowed) + ")";
+            });
+            compare_surface(w.surf, original->surf(), who, t);
+        }
+        const auto back = read_one(text);
+        compare_surface(surface_of(*back), original->surf(), "the PLANE read back from \"" + text + "\"", t);
+        check_same_plane(t, *back, *original, p, "the PLANE read back from \"" + text + "\"");
+    }
+    t.report();
 }
