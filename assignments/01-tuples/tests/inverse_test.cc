@@ -21,6 +21,18 @@ double relative_error(const matrix& x, const matrix& exact) { return norm(x - ex
 /// The condition number κ(m) = ‖m‖ ‖m⁻¹‖, from a known exact inverse.
 double condition(const matrix& m, const matrix& exact_inverse) { return norm(m) * norm(exact_inverse); }
 
+// These tests build their matrices element by element, not with your transform builders,
+// so that they test your inverse alone.
+matrix translation(double x, double y, double z) { return matrix(1, 0, 0, x, 0, 1, 0, y, 0, 0, 1, z, 0, 0, 0, 1); }
+matrix scaling(double x, double y, double z) { return matrix(x, 0, 0, 0, 0, y, 0, 0, 0, 0, z, 0, 0, 0, 0, 1); }
+matrix turn_x(double a) {
+    return matrix(1, 0, 0, 0, 0, std::cos(a), -std::sin(a), 0, 0, std::sin(a), std::cos(a), 0, 0, 0, 0, 1);
+}
+matrix turn_z(double a) {
+    return matrix(std::cos(a), -std::sin(a), 0, 0, std::sin(a), std::cos(a), 0, 0, 0, 0, 1, 0, 0, 0, 0, 1);
+}
+matrix shearing(double shx, double shy) { return matrix(1, 0, shx, 0, 0, 1, shy, 0, 0, 0, 1, 0, 0, 0, 0, 1); }
+
 }  // namespace
 
 TEST_CASE("inverse: the identity is its own inverse", "[01][inverse]") {
@@ -110,7 +122,7 @@ TEST_CASE("inverse: a general matrix with a projective bottom row inverts", "[01
                             0, 1, 0, 0,
                             0, 0, -1.2, -2.2,
                             0, 0, -1, 0);
-    const matrix m = projection * translate_matrix({0.5, -1, -3});
+    const matrix m = projection * translation(0.5, -1, -3);
     const matrix x = inverse(m);
     CHECK(distance(m * x, IDENTITY) < 1e-14);
     CHECK(distance(x * m, IDENTITY) < 1e-14);
@@ -118,14 +130,13 @@ TEST_CASE("inverse: a general matrix with a projective bottom row inverts", "[01
 }
 
 TEST_CASE("inverse: undoes a chain of scale, rotations, shear and translation", "[01][inverse]") {
-    const matrix m = translate_matrix({4, -2, 7}) * rotate_matrix({1, 2, -1}, 0.9) * shear_matrix(0.3, -0.7) *
-                     scale_matrix(2, 0.5, 3) * rotate_x_matrix(-1.2);
+    const matrix m = translation(4, -2, 7) * turn_z(0.9) * shearing(0.3, -0.7) * scaling(2, 0.5, 3) * turn_x(-1.2);
     const matrix x = inverse(m);
     CHECK(distance(x * m, IDENTITY) < 1e-14);
     CHECK(distance(x * (m * point(1, 2, 3)), point(1, 2, 3)) < 1e-14);
     // The inverse of a product is the product of the inverses in the opposite order.
-    const matrix undo = rotate_x_matrix(1.2) * scale_matrix(0.5, 2, 1.0 / 3) * shear_matrix(-0.3, 0.7) *
-                        rotate_matrix({1, 2, -1}, -0.9) * translate_matrix({-4, 2, -7});
+    const matrix undo = turn_x(1.2) * scaling(0.5, 2, 1.0 / 3) * shearing(-0.3, 0.7) * turn_z(-0.9) *
+                        translation(-4, 2, -7);
     CHECK(distance(x, undo) < 1e-14);
 }
 
