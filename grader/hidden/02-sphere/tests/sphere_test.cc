@@ -238,8 +238,9 @@ TEST_CASE("sphere: zero_t, positive or negative, hides every hit up to its absol
 // --- precision ---------------------------------------------------------------------------
 
 TEST_CASE("sphere: grazing rays hit just inside the silhouette at the right distance and miss just outside", "[02][sphere][precision][grazing]") {
-    // Near the silhouette the distance itself is ill-conditioned: a relative change of
-    // one ulp in r^2 - |l|^2 moves it by about r^2 * 1e-16 / (half chord), which the
+    // Near the silhouette the distance itself is ill-conditioned: rounding the ray's
+    // origin relative to the centre (size |origin - centre| + r, the roots' `scale`) by
+    // one ulp moves the hit by about r * scale * 1e-16 / (half chord), which the
     // tolerance adds to the usual 1e-12.
     tally t("grazing rays");
     sampler random(205);
@@ -257,7 +258,7 @@ TEST_CASE("sphere: grazing rays hit just inside the silhouette at the right dist
                     const sphere_roots roots = sphere_oracle(b.center, b.radius, r);
                     const double half_chord = roots.meets ? static_cast<double>(roots.t1 - roots.t0) / 2 : 0;
                     const double conditioning =
-                        half_chord > 0 ? 8e-16 * b.radius * b.radius / half_chord : 0;
+                        half_chord > 0 ? 8e-16 * b.radius * static_cast<double>(roots.scale) / half_chord : 0;
                     check_ray(t, *s, b, r, conditioning);
                 }
             }
