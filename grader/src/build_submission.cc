@@ -326,8 +326,10 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     for (const auto& [name, s] : in.stages)
         if (name != stage.name) group.push_back({s.reference_library, "/vl/prebuilt/reference_" + s.number + ".a"});
     // Every stage's reference under its other name, for the render program's pieces that a
-    // graded scene does not take from the submission (hidden/common/graded_pieces.cc).
-    for (const auto& [name, s] : in.stages) group.push_back({s.oracle_library, "/vl/prebuilt/oracle_" + s.number + ".a"});
+    // graded scene does not take from the submission (hidden/common/graded_pieces.cc,
+    // linked first, pulls them in). The test program does not have them.
+    for (const auto& [name, s] : in.stages)
+        renderer.push_back({s.oracle_library, "/vl/prebuilt/oracle_" + s.number + ".a"});
     for (std::size_t k = 0; k < in.framework_libraries.size(); ++k)
         group.push_back({in.framework_libraries[k], "/vl/prebuilt/framework" + std::to_string(k) + ".a"});
     const prebuilt_part catch_main{in.catch_main, "/vl/prebuilt/catch_main.a"};
