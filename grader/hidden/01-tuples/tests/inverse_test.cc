@@ -95,7 +95,7 @@ bool derangement(const std::array<int, 4>& p) {
 
 }  // namespace
 
-TEST_CASE("inverse: random general 4x4 matrices, projective ones too, invert within c·κ·u", "[01][inverse][essential]") {
+TEST_CASE("inverse: random general 4x4 matrices, projective ones too, invert within the contract's error bound", "[01][inverse][essential]") {
     inputs in(201);
     tally t;
     for (int k = 0; k < 300; ++k) {
@@ -117,7 +117,7 @@ TEST_CASE("inverse: random general 4x4 matrices, projective ones too, invert wit
     t.finish("matrices");
 }
 
-TEST_CASE("inverse: m * inverse(m) and inverse(m) * m are both the identity up to c·κ·u", "[01][inverse][essential]") {
+TEST_CASE("inverse: m * inverse(m) and inverse(m) * m are both the identity up to the contract's error bound", "[01][inverse][essential]") {
     inputs in(202);
     tally t;
     for (int k = 0; k < 300; ++k) {
@@ -135,7 +135,7 @@ TEST_CASE("inverse: m * inverse(m) and inverse(m) * m are both the identity up t
     t.finish("matrices");
 }
 
-TEST_CASE("inverse: the error stays within c·κ·u as the condition number grows from 1 to 1e12",
+TEST_CASE("inverse: the error stays within the contract's bound as the condition number grows from 1 to 1e12",
           "[01][inverse][essential]") {
     inputs in(203);
     tally t;
@@ -358,7 +358,7 @@ TEST_CASE("inverse: diagonal matrices of any sizes and scaled rotations invert t
     t.finish("matrices");
 }
 
-TEST_CASE("inverse: affine transforms (rotation, scale, shear, translation) invert within c·κ·u",
+TEST_CASE("inverse: affine transforms (rotation, scale, shear, translation) invert within the contract's error bound",
           "[01][inverse]") {
     inputs in(208);
     tally t;

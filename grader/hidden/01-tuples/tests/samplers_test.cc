@@ -110,7 +110,7 @@ double chi_square(const std::vector<int>& counts) {
 
 }  // namespace
 
-TEST_CASE("samplers: every pattern fills all n offsets, each in [0, 1), for n = 1 to 64", "[01][samplers][essential]") {
+TEST_CASE("samplers: every pattern fills all n offsets, each at least 0 and below 1, for n = 1 to 64", "[01][samplers][essential]") {
     tally t;
     for (const char* name : patterns) {
         const auto pattern = require_sampler(name);
