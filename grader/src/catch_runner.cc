@@ -37,7 +37,7 @@ std::string trim(std::string s) {
 /// file), nothing for a hidden test (they do not; the test's name says which it is).
 std::string where(const pugi::xml_node& n) {
     const fs::path file = n.attribute("filename").as_string();
-    if (file.empty() || file.string().find("/assignments/") == std::string::npos) return {};
+    if (!is_public_test_file(file.string())) return {};
     return "tests/" + file.filename().string() + ":" + n.attribute("line").as_string() + ": ";
 }
 
@@ -85,6 +85,8 @@ const char* to_string(test_outcome::status s) {
     }
     return "not run";
 }
+
+bool is_public_test_file(const std::string& file) { return file.find("/assignments/") != std::string::npos; }
 
 std::string exact_test_spec(const std::string& name) {
     std::string spec;

@@ -46,6 +46,10 @@ std::set<std::string> tests_passing_on_stubs(const std::filesystem::path& progra
 test_outcome run_test_case(const std::filesystem::path& program, const test_case_info& test, const run_limits& limits,
                            const sandbox_capabilities& caps);
 
+/// True when `file` (a test's source, as Catch2 reports it) is one of a stage's public
+/// tests, which the student has in their tests/ folder.
+bool is_public_test_file(const std::string& file);
+
 /// A Catch2 test spec that matches exactly `name` (its special characters escaped).
 std::string exact_test_spec(const std::string& name);
 

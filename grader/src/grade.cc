@@ -139,7 +139,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             i.visibility = c.visibility;
             i.tags = mine[k]->tags;
             // A public test (the student has it in tests/) says so.
-            if (mine[k]->file.find("/assignments/") != std::string::npos) i.tags.push_back("public");
+            if (is_public_test_file(mine[k]->file)) i.tags.push_back("public");
             i.max_units = share[k];
             i.test = *mine[k];
             i.kit_passes = kit_passes.contains(mine[k]->name);

@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "install.hh"
+#include "vl/registry.hh"
 
 namespace vl::grader {
 
@@ -40,11 +41,6 @@ std::string visibility(const fs::path& file, const toml::table& t, const std::st
         throw grader_error(place(file, t.get("visibility") ? *t.get("visibility") : static_cast<const toml::node&>(t)) +
                            ": visibility '" + v + "': use visible, hidden, after_due_date or after_published");
     return v;
-}
-
-/// True for 1 to 10 upper-case letters, an object type's name in a scene file.
-bool registry_name(const std::string& s) {
-    return !s.empty() && s.size() <= 10 && std::all_of(s.begin(), s.end(), [](char c) { return c >= 'A' && c <= 'Z'; });
 }
 
 double number(const fs::path& file, const toml::table& t, const char* key, double fallback) {
@@ -140,7 +136,7 @@ rubric load_rubric(const fs::path& file, const fs::path& public_scenes, bool san
             sc.id = (sc.is_public ? "public-" : "") + sc.file.stem().string();
             sc.student_pieces = strings(file, s, "student_pieces");
             for (const std::string& piece : sc.student_pieces) {
-                const bool object = registry_name(piece);
+                const bool object = vl::registry::valid_name(piece);
                 if (!object && piece != "camera" && !piece.starts_with("sampler:") && !piece.starts_with("tracer:"))
                     throw grader_error(place(file, n) + ": student_pieces names '" + piece +
                                        "': use camera, sampler:NAME, tracer:NAME or an object type such as SPHERE");

@@ -78,6 +78,13 @@ bool listed(const std::vector<std::string>& names, const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+/// The names in `a` or `b`, sorted, each once.
+std::set<std::string> both(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+    std::set<std::string> out(a.begin(), a.end());
+    out.insert(b.begin(), b.end());
+    return out;
+}
+
 /// The registry piece `key` comes from.
 const registry& source_of(const std::string& key) {
     return chosen.everything || chosen.pieces.contains(key) ? submission_pieces() : reference_pieces();
@@ -100,24 +107,15 @@ void register_all_pieces(registry& r) {
             std::_Exit(120);
         }
     }
-    std::set<std::string> objects;
-    for (const std::string& n : mine.names()) objects.insert(n);
-    for (const std::string& n : theirs.names()) objects.insert(n);
-    for (const std::string& n : objects) {
+    for (const std::string& n : both(mine.names(), theirs.names())) {
         const registry& from = source_of(n).contains(n) ? source_of(n) : mine;
         r.add(n, [&from, n] { return from.create(n); });
     }
-    std::set<std::string> samplers;
-    for (const std::string& n : mine.sampler_names()) samplers.insert(n);
-    for (const std::string& n : theirs.sampler_names()) samplers.insert(n);
-    for (const std::string& n : samplers) {
+    for (const std::string& n : both(mine.sampler_names(), theirs.sampler_names())) {
         const registry& from = source_of("sampler:" + n);
         r.add_sampler(n, [&from, n] { return from.make_sampler(n); });
     }
-    std::set<std::string> tracers;
-    for (const std::string& n : mine.tracer_names()) tracers.insert(n);
-    for (const std::string& n : theirs.tracer_names()) tracers.insert(n);
-    for (const std::string& n : tracers) {
+    for (const std::string& n : both(mine.tracer_names(), theirs.tracer_names())) {
         const registry& from = source_of("tracer:" + n);
         r.add_tracer(n, [&from, n](const scene& s) { return from.make_tracer(n, s); });
     }
