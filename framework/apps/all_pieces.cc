@@ -2,6 +2,7 @@
 
 #include "stage_01.hh"
 #include "stage_02.hh"
+#include "stage_03.hh"
 
 namespace vl {
 
@@ -9,6 +10,7 @@ void register_all_pieces(registry& r) {
     register_framework(r);
     stage01::register_stage_01(r);
     stage02::register_stage_02(r);
+    stage03::register_stage_03(r);
 }
 
 }  // namespace vl

@@ -5,25 +5,22 @@
 
 namespace vl {
 
-void primitive::read_with_surface(scene_reader& in, std::vector<scene_reader::property> properties) {
-    const std::string who = type_name();
-    surface& s = surface_;
+void add_surface_properties(std::vector<scene_reader::property>& properties, scene_reader& in, surface& s,
+                            const std::string& who) {
     properties.insert(properties.end(), {
-        {"color", [&] { s.clr = in.read_color("color of " + who); }},
-        {"kdr", [&] { s.kdr = in.read_nonnegative("kdr (diffuse reflection) of " + who); }},
-        {"ksr", [&] { s.ksr = in.read_nonnegative("ksr (specular reflection) of " + who); }},
-        {"kdt", [&] { s.kdt = in.read_nonnegative("kdt (diffuse transmission) of " + who); }},
-        {"kst", [&] { s.kst = in.read_nonnegative("kst (specular transmission) of " + who); }},
-        {"n", [&] { s.n = in.read_nonnegative("n (specular exponent) of " + who); }},
-        {"ior", [&] { s.ior = in.read_positive("ior (index of refraction) of " + who); }},
-        {"zero_t", [&] { s.zero_t = in.read_number("zero_t of " + who); }},
+        {"color", [&in, &s, who] { s.clr = in.read_color("color of " + who); }},
+        {"kdr", [&in, &s, who] { s.kdr = in.read_nonnegative("kdr (diffuse reflection) of " + who); }},
+        {"ksr", [&in, &s, who] { s.ksr = in.read_nonnegative("ksr (specular reflection) of " + who); }},
+        {"kdt", [&in, &s, who] { s.kdt = in.read_nonnegative("kdt (diffuse transmission) of " + who); }},
+        {"kst", [&in, &s, who] { s.kst = in.read_nonnegative("kst (specular transmission) of " + who); }},
+        {"n", [&in, &s, who] { s.n = in.read_nonnegative("n (specular exponent) of " + who); }},
+        {"ior", [&in, &s, who] { s.ior = in.read_positive("ior (index of refraction) of " + who); }},
+        {"zero_t", [&in, &s, who] { s.zero_t = in.read_number("zero_t of " + who); }},
     });
-    in.read_block(who, properties);
 }
 
-void primitive::write_surface(std::ostream& out) const {
+void write_surface(std::ostream& out, const surface& s) {
     const surface d;
-    const surface& s = surface_;
     const auto old_precision = out.precision(std::numeric_limits<double>::max_digits10);
     if (s.clr != d.clr) out << " color (" << s.clr.r << ", " << s.clr.g << ", " << s.clr.b << ", " << s.clr.a << ')';
     if (s.kdr != d.kdr) out << " kdr " << s.kdr;
@@ -35,5 +32,13 @@ void primitive::write_surface(std::ostream& out) const {
     if (s.zero_t != d.zero_t) out << " zero_t " << s.zero_t;
     out.precision(old_precision);
 }
+
+void primitive::read_with_surface(scene_reader& in, std::vector<scene_reader::property> properties) {
+    const std::string who = type_name();
+    add_surface_properties(properties, in, surface_, who);
+    in.read_block(who, properties);
+}
+
+void primitive::write_surface(std::ostream& out) const { vl::write_surface(out, surface_); }
 
 }  // namespace vl

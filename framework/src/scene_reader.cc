@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "vl/error.hh"
 #include "vl/registry.hh"
 
 namespace vl {
@@ -331,12 +332,20 @@ std::unique_ptr<rtab_component> scene_reader::read_object() {
     return object;
 }
 
+void scene_reader::read_child(rtab_composite& parent) {
+    if (at_end()) fail_expected("'}' to close " + parent.type_name());
+    const source_location where = peek().where;
+    std::unique_ptr<rtab_component> child = read_object();
+    try {
+        parent.insert(std::move(child));
+    } catch (const usage_error& refused) {
+        fail(where, refused.what());
+    }
+}
+
 void scene_reader::read_children(rtab_composite& parent) {
     expect('{', "to open the children of " + parent.type_name());
-    while (!accept('}')) {
-        if (at_end()) fail_expected("'}' to close " + parent.type_name());
-        parent.insert(read_object());
-    }
+    while (!accept('}')) read_child(parent);
 }
 
 void scene_reader::read_block(std::string_view owner, const std::vector<property>& properties) {

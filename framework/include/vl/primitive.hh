@@ -2,6 +2,8 @@
 /// \file
 /// \brief A leaf with a surface: what spheres, planes and polygons derive from.
 
+#include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "vl/rt_base_objects.hh"
@@ -21,6 +23,14 @@ struct surface {
     double ior = 1;           ///< index of refraction
     double zero_t = rtab_component::default_zero_t;  ///< see rtab_component::zero_t()
 };
+
+/// Adds the surface keys (`color`, `kdr`, `ksr`, `kdt`, `kst`, `n`, `ior`, `zero_t`) to
+/// `properties`, each reading into `s` through `in`; `owner` names the object in messages.
+/// For composites that pass one surface on to their parts (stage 03's BOX, FRACSPH).
+void add_surface_properties(std::vector<scene_reader::property>& properties, scene_reader& in, surface& s,
+                            const std::string& owner);
+/// Writes the surface keys of `s` that differ from the defaults (` kdr 0.5 ...`).
+void write_surface(std::ostream& out, const surface& s);
 
 /// \brief A leaf (primitive) object that stores a vl::surface and reads it from a scene.
 ///

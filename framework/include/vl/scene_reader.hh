@@ -105,8 +105,11 @@ public:
     ///@{
     /// A registered type name followed by what that type's read() takes.
     std::unique_ptr<rtab_component> read_object();
-    /// `{ OBJECT OBJECT ... }`, each inserted into `parent`.
+    /// `{ OBJECT OBJECT ... }`, each inserted into `parent` as by read_child().
     void read_children(rtab_composite& parent);
+    /// One object, inserted into `parent`. When insert() refuses it (a vl::usage_error:
+    /// a composite that cannot hold it), fails with that message at the object's place.
+    void read_child(rtab_composite& parent);
 
     /// One key of a property block and what reads its value.
     struct property {

@@ -22,6 +22,7 @@
 #include "all_pieces.hh"
 #include "stage_01.hh"
 #include "stage_02.hh"
+#include "stage_03.hh"
 #include "vl/registry.hh"
 
 namespace vl::reference_stage01 {
@@ -29,6 +30,9 @@ void register_stage_01(registry& r);
 }
 namespace vl::reference_stage02 {
 void register_stage_02(registry& r);
+}
+namespace vl::reference_stage03 {
+void register_stage_03(registry& r);
 }
 
 namespace vl {
@@ -58,6 +62,7 @@ const registry& submission_pieces() {
         register_framework(out);
         stage01::register_stage_01(out);
         stage02::register_stage_02(out);
+        stage03::register_stage_03(out);
         return out;
     }();
     return r;
@@ -69,6 +74,7 @@ const registry& reference_pieces() {
         register_framework(out);
         reference_stage01::register_stage_01(out);
         reference_stage02::register_stage_02(out);
+        reference_stage03::register_stage_03(out);
         return out;
     }();
     return r;
