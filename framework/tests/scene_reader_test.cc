@@ -156,7 +156,7 @@ TEST_CASE("scene_reader: every malformed scene gets FILE:LINE:COL and what was e
         {"camera { eye 0 0 }", "bad.ray_trace:1:18: expected a number for z of eye of camera, found '}'"},
         {"LIST { PROBE { t 1 }", "bad.ray_trace:1:21: expected '}' to close LIST, found the end of the file"},
         // unknown or malformed names
-        {"SPHEER { }", "bad.ray_trace:1:1: unknown object type 'SPHEER'; the types this program knows are: BOUNDED, LIST, PROBE"},
+        {"SPHEER { }", "bad.ray_trace:1:1: unknown object type 'SPHEER'; the types this program knows are: BOUNDED, LIST, NEARONLY, PROBE"},
         {"ABCDEFGHIJK { }", "bad.ray_trace:1:1: 'ABCDEFGHIJK' is not an object type: type names are 1 to 10 upper-case letters"},
         {"Probe { }", "bad.ray_trace:1:1: unknown setting 'Probe'"},
         {"PROBE { radius 1 }", "bad.ray_trace:1:9: PROBE has no property 'radius'; its properties are: t, color, kdr"},
@@ -210,4 +210,11 @@ TEST_CASE("scene_reader: a deeply nested scene is read, and deep includes stop a
         dir.write("f" + std::to_string(k) + ".ray_trace", "include \"f" + std::to_string(k + 1) + ".ray_trace\"\n");
     dir.write("f20.ray_trace", "PROBE { t 1 }\n");
     CHECK_THROWS_WITH(read_scene(dir.path() / "f0.ray_trace", types), Catch::Contains("nested deeper than 16 files"));
+}
+
+TEST_CASE("scene_reader: a child its composite refuses is reported at the child's place", "[scene][reader][errors]") {
+    const std::string message = error_for("NEARONLY {\n  PROBE { t 1 }\n  PROBE { t 20 }\n}\n");
+    INFO(message);
+    CHECK(message == "bad.ray_trace:3:3: NEARONLY cannot hold a PROBE at t 10 or more");
+    CHECK(error_for("NEARONLY { PROBE { t 1 } PROBE { t 2 } }\n").empty());
 }

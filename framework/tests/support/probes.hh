@@ -3,6 +3,7 @@
 #include <memory>
 #include <ostream>
 
+#include "vl/error.hh"
 #include "vl/primitive.hh"
 #include "vl/registry.hh"
 #include "vl/rt_base_objects.hh"
@@ -49,12 +50,29 @@ private:
     }
 };
 
-/// The framework's pieces plus PROBE and BOUNDED, for reading test scenes.
+/// A composite that refuses a PROBE at t 10 or more (as a bounding volume refuses an
+/// unbounded child): insert() throws vl::usage_error.
+class near_probe_list : public rtab_composite {
+public:
+    std::string type_name() const override { return "NEARONLY"; }
+    void read(scene_reader& in) override { in.read_children(*this); }
+    void insert(std::unique_ptr<rtab_component> child) override {
+        if (const auto* p = dynamic_cast<const probe*>(child.get()); p && p->t() >= 10)
+            throw usage_error("NEARONLY cannot hold a PROBE at t 10 or more");
+        rtab_composite::insert(std::move(child));
+    }
+
+private:
+    intersection find_intersection(const ray& r) const override { return nearest_child_hit(r); }
+};
+
+/// The framework's pieces plus PROBE, BOUNDED and NEARONLY, for reading test scenes.
 inline registry probe_types() {
     registry r;
     register_framework(r);
     r.add("PROBE", [] { return std::make_unique<probe>(); });
     r.add("BOUNDED", [] { return std::make_unique<bounded_probe_list>(); });
+    r.add("NEARONLY", [] { return std::make_unique<near_probe_list>(); });
     return r;
 }
 
