@@ -9,7 +9,7 @@
 
 namespace vl::stage03 {
 
-/// True when `c`'s box is known: both corners finite (bounding_sphere.cc).
+/// True when `c`'s box is known: both corners finite (bounding_sphere.cc; bvh.cc uses it too).
 bool finite_box(const rtab_component& c);
 
 /// \brief The thesis's container: children inside one sphere, which every ray tests first.
