@@ -26,6 +26,14 @@ function(vl_grader_find_stages out)
   set(${out} ${stages} PARENT_SCOPE)
 endfunction()
 
+# vl_grader_contract_dirs(OUT): every stage's contract folder (assignments/NN-name), which
+# a stage's code may include (stage 03's box is made of stage 02's polygons).
+function(vl_grader_contract_dirs out)
+  file(GLOB dirs LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/assignments/[0-9][0-9]-*)
+  list(SORT dirs)
+  set(${out} ${dirs} PARENT_SCOPE)
+endfunction()
+
 # vl_grader_reference_library(NN-name): vl_grader_reference_NN, the stage's reference,
 # whatever VL_PIECES this build uses for vl_stage_NN.
 function(vl_grader_reference_library stage)
@@ -33,6 +41,8 @@ function(vl_grader_reference_library stage)
   file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
   add_library(vl_grader_reference_${number} STATIC ${sources})
   target_include_directories(vl_grader_reference_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
+  vl_grader_contract_dirs(contracts)  # a stage builds on the earlier stages' contracts
+  target_include_directories(vl_grader_reference_${number} PUBLIC ${contracts})
   target_link_libraries(vl_grader_reference_${number} PUBLIC vl_framework PRIVATE vl_warnings)
 endfunction()
 
@@ -46,6 +56,8 @@ function(vl_grader_oracle_library stage)
   add_library(vl_grader_oracle_${number} STATIC ${sources})
   target_compile_definitions(vl_grader_oracle_${number} PRIVATE stage${number}=reference_stage${number})
   target_include_directories(vl_grader_oracle_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
+  vl_grader_contract_dirs(contracts)
+  target_include_directories(vl_grader_oracle_${number} PUBLIC ${contracts})
   target_link_libraries(vl_grader_oracle_${number} PUBLIC vl_framework PRIVATE vl_warnings)
 endfunction()
 

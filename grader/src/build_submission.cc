@@ -271,9 +271,9 @@ void seed_compile_cache(const installation& in, const stage_info& stage, const f
 
     fs::create_directories(work / "contract");
     for (const auto& [name, s] : in.stages)
-        for (const auto& e : fs::directory_iterator(in.assignment_dir(s)))
-            if (e.is_regular_file() && e.path().extension() == ".hh")
-                fs::copy_file(e.path(), work / "contract" / e.path().filename(), fs::copy_options::overwrite_existing);
+        if (fs::is_regular_file(in.contract_header(s)))
+            fs::copy_file(in.contract_header(s), work / "contract" / in.contract_header(s).filename(),
+                          fs::copy_options::overwrite_existing);
     int k = 0;
     for (const fs::path& from : {in.source_dir / "reference" / stage.name, in.assignment_dir(stage)}) {
         const fs::path sources = work / ("sources" + std::to_string(k)), objects = work / ("objects" + std::to_string(k));

@@ -44,8 +44,14 @@ struct installation {
 
     /// grader/hidden/NN-name.
     std::filesystem::path hidden_dir(const stage_info& s) const { return source_dir / "grader" / "hidden" / s.name; }
-    /// assignments/NN-name: the contract header(s) and the stubs.
+    /// assignments/NN-name: the contract header and the stubs.
     std::filesystem::path assignment_dir(const stage_info& s) const { return source_dir / "assignments" / s.name; }
+    /// assignments/NN-name/stage_NN.hh: the stage's contract, which the grader always uses
+    /// as handed out. Other headers beside it (stage 03's bounding_sphere.hh) are the
+    /// student's to change, like the .cc files.
+    std::filesystem::path contract_header(const stage_info& s) const {
+        return assignment_dir(s) / ("stage_" + s.number + ".hh");
+    }
 
     /// The stage an instructor means by `what`: "02", "02-sphere" or "sphere".
     const stage_info& find_stage(const std::string& what) const;

@@ -228,19 +228,16 @@ prepared_submission prepare_submission(const fs::path& submission, const stage_i
     // The pristine contracts of every stage (a stage's code may use an earlier stage's): the
     // student's copy of one is dropped, so an edited contract cannot change what is graded.
     for (const auto& [other, s] : in.stages) {
-        for (const auto& e : fs::directory_iterator(in.assignment_dir(s))) {
-            if (!e.is_regular_file() || e.path().extension() != ".hh") continue;
-            const fs::path file = e.path().filename();
-            fs::copy_file(e.path(), p.contract / file, fs::copy_options::overwrite_existing);
-            if (fs::exists(p.sources / file)) {
-                if (read_regular_file(p.sources / file, limits.source_bytes) !=
-                    read_regular_file(e.path(), limits.source_bytes))
-                {
-                    p.notes.push_back("your " + file.string() + " differs from the original; the original was used");
-                    p.replaced_contracts.push_back(file.string());
-                }
-                fs::remove(p.sources / file);
+        const fs::path header = in.contract_header(s);
+        if (!fs::is_regular_file(header)) continue;
+        const fs::path file = header.filename();
+        fs::copy_file(header, p.contract / file, fs::copy_options::overwrite_existing);
+        if (fs::exists(p.sources / file)) {
+            if (read_regular_file(p.sources / file, limits.source_bytes) != read_regular_file(header, limits.source_bytes)) {
+                p.notes.push_back("your " + file.string() + " differs from the original; the original was used");
+                p.replaced_contracts.push_back(file.string());
             }
+            fs::remove(p.sources / file);
         }
     }
     for (const auto& e : fs::directory_iterator(p.sources))
