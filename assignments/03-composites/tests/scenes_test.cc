@@ -1,0 +1,30 @@
+// Renders each public scene of stage 03 with this build's pieces and compares it with the
+// reference image stored beside it (made by tools/update-reference-images from the
+// reference build). When one fails, render the scene with rt and look at it next to the
+// .png. (The grader renders these scenes too, as graded scenes of their own.)
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "image_compare.hh"
+
+using namespace vl;
+
+TEST_CASE("scene: each public scene of stage 03 renders like its reference image", "[03][scene][render]") {
+    // The scenes and their PNGs are in ../scenes; tools/update-reference-images makes
+    // the PNGs with the reference pieces.
+    const std::filesystem::path scenes = std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes";
+    int rendered = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(scenes)) {
+        if (entry.path().extension() != ".ray_trace") continue;
+        const std::filesystem::path png = std::filesystem::path(entry.path()).replace_extension(".png");
+        DYNAMIC_SECTION(entry.path().filename().string()) {
+            REQUIRE(std::filesystem::exists(png));
+            const image_difference d = compare_render(entry.path(), png);
+            INFO(entry.path().filename().string() << ": " << d.summary);
+            CHECK(renders_match(d));
+        }
+        ++rendered;
+    }
+    CHECK(rendered >= 4);
+}
