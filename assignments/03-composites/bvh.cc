@@ -31,6 +31,7 @@ public:
             throw usage_error("BVH cannot hold " + child->type_name() +
                               ": its box is unknown (it is unbounded or empty), so no box can hold it;"
                               " put it beside the BVH in a LIST");
+        if (child.get() == this) throw usage_error("BVH: a composite cannot contain itself");
         std::lock_guard lock(build_mutex_);
         rtab_composite::insert(std::move(child));
         built_.store(false, std::memory_order_release);
