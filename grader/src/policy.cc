@@ -250,8 +250,12 @@ std::vector<policy_finding> check_symbols(const std::string& file, const std::ve
                 add(s, d->second);
                 continue;
             }
-            if (s.name.starts_with("__libc_") || s.name.starts_with("_IO_") || s.name.starts_with("_dl_") ||
-                plain.ends_with("_nocancel") || s.name.starts_with("__GI_")) {
+            // libstdc++'s own inline code reads __libc_single_threaded (a flag, not a call):
+            // copying a std::shared_ptr refers to it.
+            const bool from_the_standard_library = s.name.substr(0, s.name.find('@')) == "__libc_single_threaded";
+            if (!from_the_standard_library &&
+                (s.name.starts_with("__libc_") || s.name.starts_with("_IO_") || s.name.starts_with("_dl_") ||
+                 plain.ends_with("_nocancel") || s.name.starts_with("__GI_"))) {
                 add(s, syscalls);
                 continue;
             }
