@@ -6,20 +6,17 @@
 # of the hidden scenes. It then writes grader.toml next to the grader: where everything
 # is, and how a submission is compiled and linked with these parts (the same compiler and
 # flags), which the grader mounts into each sandbox under neutral names.
-# Stages are found, not listed: a folder reference/NN-name with .cc files whose stage the
-# top level declared with vl_stage(NN name) is gradable; grader/hidden/NN-name adds its
-# hidden tests, scenes and rubric.
+# Stages are not listed here: every stage the top level declares with vl_stage(NN name)
+# (cmake/stages.cmake) whose folder reference/NN-name has .cc files is gradable;
+# grader/hidden/NN-name adds its hidden tests, scenes and rubric.
 
 # vl_grader_find_stages(OUT): "NN-name" for every gradable stage, in order.
 function(vl_grader_find_stages out)
-  file(GLOB dirs LIST_DIRECTORIES true ${PROJECT_SOURCE_DIR}/reference/[0-9][0-9]-*)
-  list(SORT dirs)
+  get_property(declared GLOBAL PROPERTY VL_STAGES)
   set(stages)
-  foreach(dir IN LISTS dirs)
-    get_filename_component(stage ${dir} NAME)
-    string(SUBSTRING ${stage} 0 2 number)
-    file(GLOB sources ${dir}/*.cc)
-    if(IS_DIRECTORY ${dir} AND sources AND TARGET vl_stage_${number})
+  foreach(stage IN LISTS declared)
+    file(GLOB sources ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
+    if(sources)
       list(APPEND stages ${stage})
     endif()
   endforeach()
@@ -35,9 +32,16 @@ function(vl_grader_contract_dirs out)
 endfunction()
 
 # vl_grader_reference_library(NN-name): vl_grader_reference_NN, the stage's reference,
-# whatever VL_PIECES this build uses for vl_stage_NN.
+# whatever VL_PIECES this build uses for vl_stage_NN. When vl_stage_NN is built from the
+# reference, it is that library (an alias: the same files are not compiled twice);
+# otherwise the reference is compiled here.
 function(vl_grader_reference_library stage)
   string(SUBSTRING ${stage} 0 2 number)
+  get_target_property(from_reference vl_stage_${number} VL_FROM_REFERENCE)
+  if(from_reference)
+    add_library(vl_grader_reference_${number} ALIAS vl_stage_${number})
+    return()
+  endif()
   file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
   add_library(vl_grader_reference_${number} STATIC ${sources})
   target_include_directories(vl_grader_reference_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})

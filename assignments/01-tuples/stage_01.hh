@@ -148,6 +148,10 @@ std::unique_ptr<camera> make_pinhole_camera(const camera_settings& settings, int
 /// \name Pixel sample patterns (samplers.cc)
 ///@{
 
+/// The names of the four sample patterns: register_stage_01 binds each, so a scene's
+/// `sampler` and rt's `--sampler` may name it.
+inline constexpr std::string_view sampler_names[] = {"center", "grid", "jittered", "random"};
+
 /// The sample pattern `name` (see vl::sampler). offsets(out, seed) fills every element
 /// of `out`; n = out.size() is the number of samples, and n == 0 fills nothing.
 /// - `center`: every sample at (0.5, 0.5).

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "all_pieces.hh"
+#include "vl/registry.hh"
 #include "vl/render.hh"
 
 namespace vl {
@@ -42,9 +42,8 @@ image_difference compare_images(const image& a, const image& b, int threshold) {
 
 bool renders_match(const image_difference& d) { return d.same_size && d.mean_abs < 0.5 && d.fraction_over < 0.005; }
 
-image_difference compare_render(const std::filesystem::path& scene_file, const std::filesystem::path& reference) {
-    registry types;
-    register_all_pieces(types);
+image_difference compare_render(const std::filesystem::path& scene_file, const std::filesystem::path& reference,
+                                const registry& types) {
     const scene s = read_scene(scene_file, types);
     vfb out(s.width - 1, s.height - 1, "rgb8");
     render_options o;

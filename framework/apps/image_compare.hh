@@ -6,6 +6,7 @@
 #include <string>
 
 #include "vl/image_io.hh"
+#include "vl/registry.hh"
 
 namespace vl {
 
@@ -27,8 +28,10 @@ image_difference compare_images(const image& a, const image& b, int threshold = 
 /// (edges may move by a pixel when a compiler contracts a multiply-add differently).
 bool renders_match(const image_difference& d);
 
-/// Renders `scene_file` with every piece this build links (the scene's own size and
-/// samples) and compares it with the PNG `reference`.
-image_difference compare_render(const std::filesystem::path& scene_file, const std::filesystem::path& reference);
+/// Renders `scene_file` with the pieces in `types` (the scene's own size and samples) and
+/// compares it with the PNG `reference`. The stages' public tests pass every piece their
+/// build links (vl::all_pieces(), pieces/all_pieces.hh).
+image_difference compare_render(const std::filesystem::path& scene_file, const std::filesystem::path& reference,
+                                const registry& types);
 
 }  // namespace vl

@@ -7,6 +7,18 @@
 
 namespace vl {
 
+namespace {
+
+/// `: a, b, c`, or ` (it registers none)`: what a message about a missing name ends with.
+std::string registered(const std::vector<std::string>& names) {
+    if (names.empty()) return " (it registers none)";
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "; it registers: " : ", ") + n;
+    return out;
+}
+
+}  // namespace
+
 bool registry::valid_name(std::string_view name) {
     return !name.empty() && name.size() <= 10 &&
            std::all_of(name.begin(), name.end(), [](char c) { return c >= 'A' && c <= 'Z'; });
@@ -65,23 +77,24 @@ void registry::add_tracer(std::string_view name, tracer_factory make) {
 
 std::unique_ptr<camera> registry::make_camera(const camera_settings& settings, int width, int height) const {
     if (!camera_)
-        throw usage_error("no camera is registered: the pinhole camera is stage 01's piece "
-                          "(link it and call register_stage_01)");
+        throw usage_error("no camera is registered in this build: the camera is a stage's piece, "
+                          "set by that stage's registration function (registry::set_camera)");
     return camera_(settings, width, height);
 }
 
 std::unique_ptr<sampler> registry::make_sampler(std::string_view name) const {
     const auto it = samplers_.find(name);
     if (it == samplers_.end())
-        throw usage_error("no sampler '" + std::string(name) +
-                          "' is registered: sample patterns are stage 01's pieces (link it and call register_stage_01)");
+        throw usage_error("no sampler '" + std::string(name) + "' is registered in this build" +
+                          registered(sampler_names()));
     return it->second();
 }
 
 std::unique_ptr<tracer> registry::make_tracer(std::string_view name, const scene& s) const {
     const auto it = tracers_.find(name);
     if (it == tracers_.end())
-        throw usage_error("no tracer '" + std::string(name) + "' is registered (the whitted tracer is stage 04's piece)");
+        throw usage_error("no tracer '" + std::string(name) + "' is registered in this build" +
+                          registered(tracer_names()));
     return it->second(s);
 }
 

@@ -10,22 +10,26 @@ namespace vl {
 
 namespace {
 
-std::string one_of(std::span<const std::string_view> names) {
+std::string one_of(const std::vector<std::string>& names) {
     std::string out;
-    for (const auto n : names) out += (out.empty() ? "" : ", ") + std::string(n);
-    return out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? "none is registered in this build" : out;
 }
 
-std::string read_name(scene_reader& in, std::string_view what, std::span<const std::string_view> names) {
+/// A sampler's or tracer's name, which must be one of `names`: what the program's registry
+/// binds. The reader knows no other list; a name another build binds (a stage this one
+/// does not have) is as unknown here as a typing mistake.
+std::string read_name(scene_reader& in, std::string_view what, const std::vector<std::string>& names) {
     const token t = in.peek();
     const std::string name = in.read_word(std::string(what) + " name (" + one_of(names) + ")");
     if (std::find(names.begin(), names.end(), name) == names.end())
-        in.fail(t.where, "unknown " + std::string(what) + " '" + name + "'; choose one of: " + one_of(names));
+        in.fail(t.where, std::string(what) + " '" + name + "' is not registered in this build; " +
+                             (names.empty() ? "it registers none" : "choose one of: " + one_of(names)));
     return name;
 }
 
 /// Reads every statement; returns how many there were.
-int read_statements(scene_reader& in, scene& s) {
+int read_statements(scene_reader& in, scene& s, const registry& types) {
     int statements = 0;
     std::map<std::string, source_location> seen;  // settings given once only
     auto once = [&](const token& key) {
@@ -73,11 +77,11 @@ int read_statements(scene_reader& in, scene& s) {
         } else if (key.text == "samples") {
             s.samples_per_pixel = in.read_int("samples per pixel", 1, 4096);
         } else if (key.text == "sampler") {
-            s.sampler = read_name(in, "sampler", sampler_names);
+            s.sampler = read_name(in, "sampler", types.sampler_names());
         } else if (key.text == "depth") {
             s.max_depth = in.read_int("recursion depth", 0, 64);
         } else if (key.text == "tracer") {
-            s.tracer = read_name(in, "tracer", tracer_names);
+            s.tracer = read_name(in, "tracer", types.tracer_names());
         } else if (key.text == "ambient") {
             s.ambient = in.read_color("ambient");
         } else if (key.text == "background") {
@@ -93,8 +97,8 @@ int read_statements(scene_reader& in, scene& s) {
 
 // A scene without objects is fine (the sky tracer shows what the camera sees); a file
 // without any statement is almost certainly the wrong file.
-scene finish(scene_reader& in, scene s) {
-    if (read_statements(in, s) == 0) {
+scene finish(scene_reader& in, scene s, const registry& types) {
+    if (read_statements(in, s, types) == 0) {
         const token end = in.peek();
         in.fail(end.where, "the scene is empty: add settings and objects, such as SPHERE { center 0 0 0 radius 1 }");
     }
@@ -108,7 +112,7 @@ scene read_scene(const std::filesystem::path& file, const registry& types) {
     in.open(file);
     scene s;
     s.source = file.string();
-    return finish(in, std::move(s));
+    return finish(in, std::move(s), types);
 }
 
 scene parse_scene(std::string text, const std::string& name, const registry& types) {
@@ -116,7 +120,7 @@ scene parse_scene(std::string text, const std::string& name, const registry& typ
     in.open_text(std::move(text), name);
     scene s;
     s.source = name;
-    return finish(in, std::move(s));
+    return finish(in, std::move(s), types);
 }
 
 }  // namespace vl

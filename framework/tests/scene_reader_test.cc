@@ -162,8 +162,10 @@ TEST_CASE("scene_reader: every malformed scene gets FILE:LINE:COL and what was e
         {"PROBE { radius 1 }", "bad.ray_trace:1:9: PROBE has no property 'radius'; its properties are: t, color, kdr"},
         {"PROBE { t 1 t 2 }", "bad.ray_trace:1:13: PROBE t is given twice (first at bad.ray_trace:1:9)"},
         {"size 8 8\nsize 9 9\nPROBE { t 1 }", "bad.ray_trace:2:1: size is given twice (first at bad.ray_trace:1:1)"},
-        {"tracer phong\nPROBE { }", "bad.ray_trace:1:8: unknown tracer 'phong'; choose one of: flat, normals, sky, whitted"},
-        {"sampler 4\nPROBE { }", "bad.ray_trace:1:9: expected sampler name (center, grid, jittered, random), found the number 4"},
+        {"tracer phong\nPROBE { }", "bad.ray_trace:1:8: tracer 'phong' is not registered in this build; choose one of: flat, normals, sky"},
+        {"tracer whitted\nPROBE { }", "bad.ray_trace:1:8: tracer 'whitted' is not registered in this build; choose one of: flat, normals, sky"},
+        {"sampler grid\nPROBE { }", "bad.ray_trace:1:9: sampler 'grid' is not registered in this build; choose one of: center, jittered"},
+        {"sampler 4\nPROBE { }", "bad.ray_trace:1:9: expected sampler name (center, jittered), found the number 4"},
         // bad numbers
         {"PROBE { t nan }", "bad.ray_trace:1:11: expected a number for t of PROBE, found 'nan'"},
         {"PROBE { t inf }", "bad.ray_trace:1:11: expected a number for t of PROBE, found 'inf'"},

@@ -113,3 +113,27 @@ TEST_CASE("scene: settings without objects are a scene (the sky tracer shows the
     CHECK(s.root->num_children() == 0);
     CHECK(s.tracer == "sky");
 }
+
+TEST_CASE("scene: sampler and tracer names are the registry's, whatever they are", "[scene]") {
+    registry types = test_types();
+    const std::string text = "sampler stratified\ntracer whitted\nPROBE { }";
+    // Not registered: the error says so and lists what this build has.
+    CHECK_THROWS_WITH(parse_scene(text, "s.ray_trace", types),
+                      Catch::StartsWith("s.ray_trace:1:9: sampler 'stratified' is not registered in this build; "
+                                        "choose one of: center, jittered"));
+    types.add_sampler("stratified", [] { return std::make_unique<test::probe_sampler>(); });
+    CHECK_THROWS_WITH(parse_scene(text, "s.ray_trace", types),
+                      Catch::StartsWith("s.ray_trace:2:8: tracer 'whitted' is not registered in this build; "
+                                        "choose one of: flat, normals, sky"));
+    // Once a piece binds them, the same scene reads.
+    types.add_tracer("whitted", [](const scene& sc) { return std::make_unique<flat_tracer>(sc); });
+    const scene s = parse_scene(text, "s.ray_trace", types);
+    CHECK(s.sampler == "stratified");
+    CHECK(s.tracer == "whitted");
+    // With no sample pattern at all, the message says that none is registered.
+    registry bare;
+    register_framework(bare);
+    CHECK_THROWS_WITH(parse_scene("sampler center\n", "s.ray_trace", bare),
+                      Catch::StartsWith("s.ray_trace:1:9: sampler 'center' is not registered in this build; "
+                                        "it registers none"));
+}

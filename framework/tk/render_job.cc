@@ -1,6 +1,5 @@
 #include "render_job.hh"
 
-#include "all_pieces.hh"
 #include "vl/error.hh"
 
 namespace vl::tk {
@@ -15,17 +14,12 @@ scene read_renderable(const std::filesystem::path& file, const registry& types) 
     return read_scene(file, types);
 }
 
-registry all_pieces() {
-    registry r;
-    register_all_pieces(r);
-    return r;
-}
-
 }  // namespace
 
-render_job::render_job(const std::filesystem::path& file, int width, int height, std::string_view storage)
+render_job::render_job(const registry& pieces, const std::filesystem::path& file, int width, int height,
+                       std::string_view storage)
     : file_(file),
-      types_(all_pieces()),
+      types_(pieces),
       scene_(read_renderable(file, types_)),
       pixels_(width - 1, height - 1, storage),
       thread_([this] { run(); }) {}

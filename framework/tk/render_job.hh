@@ -28,10 +28,12 @@ namespace vl::tk {
 /// workers fill other tiles is safe; the mutex orders the writes before the read.
 class render_job {
 public:
-    /// Reads the scene at once (so a bad file is an error of the `render` command, with its
-    /// FILE:LINE:COL) and starts rendering it at `width` x `height` into a buffer in
-    /// `storage`. Throws vl::file_error for a file render_to_vfb cannot render.
-    render_job(const std::filesystem::path& file, int width, int height, std::string_view storage);
+    /// Reads the scene at once with the pieces in `pieces` (so a bad file is an error of the
+    /// `render` command, with its FILE:LINE:COL) and starts rendering it at `width` x
+    /// `height` into a buffer in `storage`. Throws vl::file_error for a file render_to_vfb
+    /// cannot render. The job keeps its own copy of `pieces`.
+    render_job(const registry& pieces, const std::filesystem::path& file, int width, int height,
+               std::string_view storage);
     /// Cancels and joins the thread.
     ~render_job();
     render_job(const render_job&) = delete;

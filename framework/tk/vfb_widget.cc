@@ -17,9 +17,9 @@
 #include <utility>
 #include <vector>
 
-#include "heat_map.hh"
 #include "render_job.hh"
 #include "thesis_drawing.hh"
+#include "vl/heat_map.hh"
 #include "vl/vfb.hh"
 #include "x_frame.hh"
 #include "zoom_painter.hh"
@@ -124,6 +124,7 @@ struct widget {
     bool redraw_pending = false;
     rect damage;  // screen pixels to repaint at the next redraw
 
+    std::shared_ptr<const registry> pieces;  // what `render` renders with (vfb_init's)
     std::unique_ptr<render_job> job;
     Tcl_TimerToken timer = nullptr;
     bool exit_handler = false;
@@ -577,7 +578,7 @@ int cmd_render(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     if (objc != 3) return wrong_args(interp, objv, "file");
     if (refuse_while_rendering(w, interp, "render") != TCL_OK) return TCL_ERROR;
     try {
-        w->job = std::make_unique<render_job>(Tcl_GetString(objv[2]), w->pixels->width(), w->pixels->height(),
+        w->job = std::make_unique<render_job>(*w->pieces, Tcl_GetString(objv[2]), w->pixels->width(), w->pixels->height(),
                                               w->pixels->storage_name());
     } catch (const std::exception& e) {
         return set_error(interp, std::string("render: ") + e.what());
@@ -760,7 +761,8 @@ void command_deleted(ClientData data) {
 }
 
 // `vfb pathName ?-option value ...?`
-int create_command(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+// `data` is the registry vfb_init made, shared by every widget it creates.
+int create_command(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     if (objc < 2) {
         Tcl_WrongNumArgs(interp, 1, objv, "pathName ?-option value ...?");
         return TCL_ERROR;
@@ -772,6 +774,7 @@ int create_command(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
     Tk_SetClass(tkwin, "Vfb");
 
     auto* w = new widget;
+    w->pieces = *static_cast<const std::shared_ptr<const registry>*>(data);
     w->tkwin = tkwin;
     w->display = Tk_Display(tkwin);
     w->interp = interp;
@@ -791,11 +794,24 @@ int create_command(ClientData, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
 }
 
 }  // namespace
-}  // namespace vl::tk
 
-extern "C" int Vfb_Init(Tcl_Interp* interp) {
+int vfb_init(Tcl_Interp* interp, void (*register_pieces)(registry&)) {
     if (!Tcl_InitStubs(interp, "8.6", 0) || !Tk_InitStubs(interp, "8.6", 0)) return TCL_ERROR;
-    Tcl_CreateObjCommand(interp, "vfb", vl::tk::create_command, nullptr, nullptr);
+    // The registry lives as long as the `vfb` command; each widget keeps it too, for the
+    // renders it may still start after the command is gone.
+    auto pieces = std::make_unique<std::shared_ptr<const registry>>();
+    try {
+        auto r = std::make_shared<registry>();
+        register_pieces(*r);
+        *pieces = std::move(r);
+    } catch (const std::exception& e) {
+        return set_error(interp, std::string("vfb: the pieces cannot be registered: ") + e.what());
+    }
+    Tcl_CreateObjCommand(interp, "vfb", create_command, pieces.release(), [](ClientData data) {
+        delete static_cast<std::shared_ptr<const registry>*>(data);
+    });
     if (Tcl_EvalEx(interp, vfb_bindings_script, -1, TCL_EVAL_GLOBAL) != TCL_OK) return TCL_ERROR;
     return Tcl_PkgProvide(interp, "vfb", VFB_PACKAGE_VERSION);
 }
+
+}  // namespace vl::tk

@@ -15,10 +15,11 @@ namespace {
 
 /// What the kit takes from the top of the tree. Everything else (reference/, .ci/, build
 /// trees, version control) stays behind; of grader/ only its CMakeLists.txt goes, which
-/// builds nothing without grader/hidden/.
+/// builds nothing without grader/hidden/. pieces/ is what the build makes from the list of
+/// stages: the aggregate's template and the programs' main()s.
 const std::vector<std::string> kit_parts = {"CMakeLists.txt", "CMakePresets.json", "README.md", ".gitignore",
-                                            ".clang-format", ".clang-tidy", "framework", "assignments", "docs",
-                                            "scenes", "tools", "bench", "cmake/stages.cmake",
+                                            ".clang-format", ".clang-tidy", "framework", "pieces", "assignments",
+                                            "docs", "scenes", "tools", "bench", "cmake/stages.cmake",
                                             "grader/CMakeLists.txt"};
 
 std::string read_all(const fs::path& p) {
@@ -56,7 +57,7 @@ std::vector<std::string> find_leaks(const fs::path& source_dir, const fs::path& 
     // Text the kit may share with the reference: everything students get anyway (a stub
     // keeps the reference's finished parts, such as reading a scene, sometimes reflowed).
     std::string public_text;
-    for (const char* part : {"assignments", "framework"})
+    for (const char* part : {"assignments", "framework", "pieces"})
         for (const fs::path& f : files_under(source_dir / part)) public_text += read_all(f) + "\n";
     auto is_public = [&](const std::string& s) { return public_text.find(s) != std::string::npos; };
     std::vector<std::pair<std::string, std::string>> secrets;  // (what, where it is from)

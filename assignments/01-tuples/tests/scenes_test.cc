@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "all_pieces.hh"
 #include "image_compare.hh"
 
 namespace fs = std::filesystem;
@@ -22,7 +23,7 @@ fs::path scenes_dir() {
 void check_scene(const std::string& name) {
     const fs::path scene = scenes_dir() / (name + ".ray_trace"), reference = scenes_dir() / (name + ".png");
     INFO("scene " << scene.string() << " against " << reference.string());
-    const vl::image_difference d = vl::compare_render(scene, reference);
+    const vl::image_difference d = vl::compare_render(scene, reference, vl::all_pieces());
     INFO(d.summary);
     INFO("render it with rt and compare; if a reference piece or the scene changed on purpose, run "
          "tools/update-reference-images");

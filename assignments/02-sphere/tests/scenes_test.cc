@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "all_pieces.hh"
 #include "image_compare.hh"
 
 using namespace vl;
@@ -20,7 +21,7 @@ TEST_CASE("scene: each public scene renders like its reference image", "[02][sce
         const std::filesystem::path png = std::filesystem::path(entry.path()).replace_extension(".png");
         DYNAMIC_SECTION(entry.path().filename().string()) {
             REQUIRE(std::filesystem::exists(png));
-            const image_difference d = compare_render(entry.path(), png);
+            const image_difference d = compare_render(entry.path(), png, all_pieces());
             INFO(entry.path().filename().string() << ": " << d.summary);
             CHECK(renders_match(d));
         }

@@ -18,7 +18,7 @@ public:
                            std::to_string(where.line()) + ")") {}
 
 private:
-    // "std::unique_ptr<vl::camera> vl::stage01::make_pinhole_camera(const ...)" -> "vl::stage01::make_pinhole_camera"
+    // "std::unique_ptr<vl::camera> vl::stageNN::make_camera(const ...)" -> "vl::stageNN::make_camera"
     static std::string function_name(const std::source_location& where) {
         std::string f = where.function_name();
         const auto paren = f.find('(');

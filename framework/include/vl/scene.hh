@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <memory>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "vl/object_list.hh"
@@ -36,22 +35,18 @@ struct scene {
     color ambient{0.1, 0.1, 0.1};         ///< light that reaches everything
     color background = BLACK;             ///< what a ray that hits nothing sees
     int samples_per_pixel = 1;            ///< rays per pixel
-    std::string sampler = "center";       ///< how those rays are placed in the pixel
+    std::string sampler = "center";       ///< how those rays are placed in the pixel (a registered name)
     int max_depth = 5;                    ///< recursion depth for reflection and refraction
-    std::string tracer = "flat";          ///< the client that turns rays into colours
+    std::string tracer = "flat";          ///< the client that turns rays into colours (a registered name)
     std::unique_ptr<object_list> root = std::make_unique<object_list>();  ///< every object
 };
 
-/// The pixel sample patterns a scene may name (stage 01 implements them).
-inline constexpr std::string_view sampler_names[] = {"center", "grid", "jittered", "random"};
-/// The tracers a scene may name: `flat`, `normals` and `sky` ship with the framework,
-/// `whitted` is stage 04.
-inline constexpr std::string_view tracer_names[] = {"flat", "normals", "sky", "whitted"};
 /// The largest width or height a scene may ask for.
 inline constexpr int max_image_side = 16384;
 
 /// Reads a scene file, creating objects through `types`. Throws vl::file_error with
-/// `FILE:LINE:COL: ...` for anything malformed.
+/// `FILE:LINE:COL: ...` for anything malformed, and for a `sampler` or `tracer` that
+/// `types` does not register (the error lists those it does).
 scene read_scene(const std::filesystem::path& file, const registry& types);
 /// Reads a scene from `text`, reporting errors as in file `name`.
 scene parse_scene(std::string text, const std::string& name, const registry& types);

@@ -1,8 +1,10 @@
 #pragma once
 // Test doubles for the component tree. Students need not read this file.
+#include <algorithm>
 #include <memory>
 #include <ostream>
 
+#include "vl/camera.hh"
 #include "vl/error.hh"
 #include "vl/primitive.hh"
 #include "vl/registry.hh"
@@ -66,13 +68,24 @@ private:
     intersection find_intersection(const ray& r) const override { return nearest_child_hit(r); }
 };
 
-/// The framework's pieces plus PROBE, BOUNDED and NEARONLY, for reading test scenes.
+/// A sample pattern that puts every sample at the centre of the pixel.
+class probe_sampler : public sampler {
+public:
+    void offsets(std::span<sample_offset> out, std::uint64_t) const override {
+        std::fill(out.begin(), out.end(), sample_offset{0.5, 0.5});
+    }
+};
+
+/// The framework's pieces plus PROBE, BOUNDED and NEARONLY, and probe_sampler as the sample
+/// patterns `center` and `jittered`, for reading test scenes.
 inline registry probe_types() {
     registry r;
     register_framework(r);
     r.add("PROBE", [] { return std::make_unique<probe>(); });
     r.add("BOUNDED", [] { return std::make_unique<bounded_probe_list>(); });
     r.add("NEARONLY", [] { return std::make_unique<near_probe_list>(); });
+    r.add_sampler("center", [] { return std::make_unique<probe_sampler>(); });
+    r.add_sampler("jittered", [] { return std::make_unique<probe_sampler>(); });
     return r;
 }
 

@@ -1,13 +1,15 @@
-// The pieces of the grader's render program (it replaces framework/apps/all_pieces.cc
-// there): a graded scene is rendered with the submission's code for the pieces the
-// rubric names in the scene's `student_pieces`, and with the reference's for every other
-// piece, so a scene of one category depends only on that category's code.
+// The pieces of the grader's render program (there it replaces the build's aggregate
+// vl::register_all_pieces, pieces/all_pieces.cc.in): a graded scene is rendered with the
+// submission's code for the pieces the rubric names in the scene's `student_pieces`, and
+// with the reference's for every other piece, so a scene of one category depends only on
+// that category's code.
 //
 // The grader names the pieces in the environment variable VL_GRADED_PIECES, a list of
 // `camera`, `sampler:NAME`, `tracer:NAME` and object type names (`SPHERE`) separated by
 // spaces. Without it (the reference renders) every piece is the linked stage code's.
 // The reference's copy of each stage is compiled into namespace vl::reference_stageNN
-// (grader/CMakeLists.txt), so it links beside the submission's vl::stageNN.
+// (grader/CMakeLists.txt), so it links beside the submission's vl::stageNN; the stages are
+// those the build declares (graded_stages.hh, generated from graded_stages.hh.in).
 //
 // The selection is read while the program starts, before any of the submission's code
 // runs: this file comes first on the link line, so its initialisers run first.
@@ -20,20 +22,8 @@
 #include <vector>
 
 #include "all_pieces.hh"
-#include "stage_01.hh"
-#include "stage_02.hh"
-#include "stage_03.hh"
+#include "graded_stages.hh"
 #include "vl/registry.hh"
-
-namespace vl::reference_stage01 {
-void register_stage_01(registry& r);
-}
-namespace vl::reference_stage02 {
-void register_stage_02(registry& r);
-}
-namespace vl::reference_stage03 {
-void register_stage_03(registry& r);
-}
 
 namespace vl {
 
@@ -60,9 +50,7 @@ const registry& submission_pieces() {
     static const registry r = [] {
         registry out;
         register_framework(out);
-        stage01::register_stage_01(out);
-        stage02::register_stage_02(out);
-        stage03::register_stage_03(out);
+        graded::register_linked_stages(out);
         return out;
     }();
     return r;
@@ -72,9 +60,7 @@ const registry& reference_pieces() {
     static const registry r = [] {
         registry out;
         register_framework(out);
-        reference_stage01::register_stage_01(out);
-        reference_stage02::register_stage_02(out);
-        reference_stage03::register_stage_03(out);
+        graded::register_reference_stages(out);
         return out;
     }();
     return r;

@@ -17,7 +17,9 @@ color heat_color(double fraction);
 /// from black (0 tests, bottom) to white (`max` tests, top). Returns the largest cost.
 std::uint32_t draw_heat_map(std::span<const std::uint32_t> tests, int width, int height, vfb& out);
 
-/// Width of the scale strip and the gap before it, in pixels.
-inline constexpr int heat_scale_width = 24, heat_scale_gap = 4;
+/// Width of the colour scale strip, in pixels.
+inline constexpr int heat_scale_width = 24;
+/// Width of the gap between the image and the scale strip, in pixels.
+inline constexpr int heat_scale_gap = 4;
 
 }  // namespace vl

@@ -2,6 +2,10 @@
 //
 //   rt SCENE -o OUT.png [--size WxH] [--spp N] [--sampler NAME] [--threads N]
 //      [--heatmap HEAT.png] [--stats]
+//
+// The command line and the render; the pieces come from the caller (rt_main.hh).
+#include "rt_main.hh"
+
 #include <malloc.h>
 
 #include <algorithm>
@@ -11,30 +15,39 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
-#include "all_pieces.hh"
-#include "heat_map.hh"
 #include "vl/error.hh"
+#include "vl/heat_map.hh"
 #include "vl/image_io.hh"
 #include "vl/render.hh"
 #include "vl/scene.hh"
 
 namespace {
 
-constexpr const char* usage =
-    "usage: rt SCENE -o OUT [--size WxH] [--spp N] [--sampler NAME] [--threads N]\n"
-    "          [--heatmap HEAT.png] [--stats]\n"
-    "  SCENE            a .ray_trace file (docs/scene-format.md)\n"
-    "  -o OUT           the image to write: .png, .ppm or .pgm (8-bit sRGB), .pfm (linear float)\n"
-    "  --size WxH       image size in pixels (default: the scene's size)\n"
-    "  --spp N          samples per pixel (default: the scene's samples)\n"
-    "  --sampler NAME   center, grid, jittered or random (default: the scene's sampler)\n"
-    "  --threads N      worker threads (default: one per core)\n"
-    "  --heatmap FILE   also write the intersection heat map, with its colour scale\n"
-    "  --stats          print rays, tests per ray, time and memory\n";
+/// `a, b, c`, or `none` for no names.
+std::string listing(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out.empty() ? "none" : out;
+}
+
+/// rt --help: the sample patterns are those registered in this build.
+std::string usage(const vl::registry& pieces) {
+    return "usage: rt SCENE -o OUT [--size WxH] [--spp N] [--sampler NAME] [--threads N]\n"
+           "          [--heatmap HEAT.png] [--stats]\n"
+           "  SCENE            a .ray_trace file (docs/scene-format.md)\n"
+           "  -o OUT           the image to write: .png, .ppm or .pgm (8-bit sRGB), .pfm (linear float)\n"
+           "  --size WxH       image size in pixels (default: the scene's size)\n"
+           "  --spp N          samples per pixel (default: the scene's samples)\n"
+           "  --sampler NAME   one of " + listing(pieces.sampler_names()) + " (default: the scene's sampler)\n"
+           "  --threads N      worker threads (default: one per core)\n"
+           "  --heatmap FILE   also write the intersection heat map, with its colour scale\n"
+           "  --stats          print rays, tests per ray, time and memory\n";
+}
 
 /// A command-line mistake: the message is printed as `rt: MESSAGE` with a hint.
-struct usage_error {
+struct command_line_error {
     std::string message;
 };
 
@@ -42,7 +55,7 @@ int to_int(std::string_view flag, std::string_view text, int lo, int hi) {
     int v = 0;
     const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), v);
     if (err != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
-        throw usage_error{std::string(flag) + " wants a whole number from " + std::to_string(lo) + " to " +
+        throw command_line_error{std::string(flag) + " wants a whole number from " + std::to_string(lo) + " to " +
                           std::to_string(hi) + ", not '" + std::string(text) + "'"};
     return v;
 }
@@ -55,16 +68,16 @@ struct options {
     bool stats = false;
 };
 
-options parse(int argc, char** argv) {
+options parse(int argc, char** argv, const vl::registry& pieces) {
     options o;
     for (int k = 1; k < argc; ++k) {
         const std::string_view a = argv[k];
         auto value = [&]() -> std::string_view {
-            if (k + 1 >= argc) throw usage_error{std::string(a) + " needs a value"};
+            if (k + 1 >= argc) throw command_line_error{std::string(a) + " needs a value"};
             return argv[++k];
         };
         if (a == "-h" || a == "--help") {
-            std::cout << usage;
+            std::cout << usage(pieces);
             std::exit(0);
         } else if (a == "-o") {
             o.output = value();
@@ -81,19 +94,19 @@ options parse(int argc, char** argv) {
         } else if (a == "--size") {
             const std::string_view v = value();
             const auto x = v.find('x');
-            if (x == std::string_view::npos) throw usage_error{"--size wants WIDTHxHEIGHT, like 640x480, not '" + std::string(v) + "'"};
+            if (x == std::string_view::npos) throw command_line_error{"--size wants WIDTHxHEIGHT, like 640x480, not '" + std::string(v) + "'"};
             o.size = {{to_int("--size width", v.substr(0, x), 1, vl::max_image_side),
                        to_int("--size height", v.substr(x + 1), 1, vl::max_image_side)}};
         } else if (!a.empty() && a[0] == '-') {
-            throw usage_error{"unknown option '" + std::string(a) + "'"};
+            throw command_line_error{"unknown option '" + std::string(a) + "'"};
         } else if (o.scene.empty()) {
             o.scene = a;
         } else {
-            throw usage_error{"one scene at a time: '" + o.scene + "' and '" + std::string(a) + "'"};
+            throw command_line_error{"one scene at a time: '" + o.scene + "' and '" + std::string(a) + "'"};
         }
     }
-    if (o.scene.empty()) throw usage_error{"no scene file given"};
-    if (o.output.empty()) throw usage_error{"no output image given (-o OUT.png)"};
+    if (o.scene.empty()) throw command_line_error{"no scene file given"};
+    if (o.output.empty()) throw command_line_error{"no output image given (-o OUT.png)"};
     return o;
 }
 
@@ -101,11 +114,9 @@ std::size_t heap_in_use() { return mallinfo2().uordblks; }
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int vl::rt_main(int argc, char** argv, const registry& types) {
     try {
-        const options opt = parse(argc, argv);
-        vl::registry types;
-        vl::register_all_pieces(types);
+        const options opt = parse(argc, argv, types);
 
         const std::size_t heap_before = heap_in_use();
         vl::scene s = vl::read_scene(opt.scene, types);
@@ -113,9 +124,10 @@ int main(int argc, char** argv) {
         if (opt.size) std::tie(s.width, s.height) = *opt.size;
         if (opt.spp) s.samples_per_pixel = *opt.spp;
         if (!opt.sampler.empty()) {
-            if (std::find(std::begin(vl::sampler_names), std::end(vl::sampler_names), opt.sampler) ==
-                std::end(vl::sampler_names))
-                throw usage_error{"--sampler: unknown sampler '" + opt.sampler + "' (center, grid, jittered, random)"};
+            const std::vector<std::string> samplers = types.sampler_names();
+            if (std::find(samplers.begin(), samplers.end(), opt.sampler) == samplers.end())
+                throw command_line_error{"--sampler: sampler '" + opt.sampler + "' is not registered in this build (" +
+                                  listing(samplers) + ")"};
             s.sampler = opt.sampler;
         }
 
@@ -152,7 +164,7 @@ int main(int argc, char** argv) {
                         image.bytes_per_pixel());
         }
         return 0;
-    } catch (const usage_error& e) {
+    } catch (const command_line_error& e) {
         std::fprintf(stderr, "rt: %s (rt --help shows the options)\n", e.message.c_str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "rt: %s\n", e.what());

@@ -1,14 +1,15 @@
-// Tests of the rt program and the render driver it runs.
+// Tests of the rt program and the render driver it runs, with every piece this build links
+// (labelled framework: they test the framework's rt_main and render driver).
 #include <catch2/catch.hpp>
 
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
-#include "../tests/support/temp_dir.hh"
+#include "../framework/tests/support/temp_dir.hh"
 #include "all_pieces.hh"
-#include "heat_map.hh"
 #include "image_compare.hh"
+#include "vl/heat_map.hh"
 #include "vl/image_io.hh"
 #include "vl/render.hh"
 
@@ -91,6 +92,15 @@ TEST_CASE("rt: a malformed scene prints FILE:LINE:COL and exits non-zero", "[rt]
     CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);  // one clear line
 }
 
+TEST_CASE("rt: a tracer the build does not register is a FILE:LINE:COL error listing those it does", "[rt]") {
+    test::temp_dir dir;
+    const auto scene = dir.write("t.ray_trace", "size 8 8\ntracer phong\nSPHERE { }\n");
+    const run_result r = run_rt(scene.string() + " -o " + (dir.path() / "x.png").string());
+    CHECK(r.status != 0);
+    CHECK_THAT(r.output, Catch::Contains("t.ray_trace:2:8: tracer 'phong' is not registered in this build; choose one of: ") &&
+                             Catch::Contains("flat, normals, sky"));
+}
+
 TEST_CASE("rt: bad flags and unwritable outputs are one clear line and a non-zero exit", "[rt]") {
     CHECK_THAT(run_rt("scenes/sample.ray_trace").output, Catch::Contains("rt: no output image given"));
     CHECK(run_rt("scenes/sample.ray_trace").status != 0);
@@ -98,6 +108,10 @@ TEST_CASE("rt: bad flags and unwritable outputs are one clear line and a non-zer
                Catch::Contains("--spp wants a whole number from 1 to 4096, not 'zero'"));
     CHECK_THAT(run_rt("scenes/sample.ray_trace -o x.png --bogus").output, Catch::Contains("unknown option '--bogus'"));
     CHECK_THAT(run_rt("scenes/sample.ray_trace -o x.png --size 10by10").output, Catch::Contains("--size wants WIDTHxHEIGHT"));
+    // Sample patterns are checked against the registry: the message lists this build's.
+    const std::string sampler = run_rt("scenes/sample.ray_trace -o x.png --sampler bogus").output;
+    CHECK_THAT(sampler, Catch::Contains("rt: --sampler: sampler 'bogus' is not registered in this build (") &&
+                            Catch::Contains("jittered"));
     const run_result r = run_rt("scenes/sample.ray_trace -o /nonexistent-dir/out.png --size 8x8");
     CHECK(r.status != 0);
     CHECK_THAT(r.output, Catch::Contains("/nonexistent-dir/out.png"));

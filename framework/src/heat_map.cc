@@ -1,4 +1,4 @@
-#include "heat_map.hh"
+#include "vl/heat_map.hh"
 
 #include <algorithm>
 

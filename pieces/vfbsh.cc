@@ -2,11 +2,12 @@
 //
 //   vfbsh ?script.tcl? ?arg ...?    as wish; without a script, an interactive prompt
 //
-// It is wish plus one line: Vfb_Init. The widget's objects are the ones the loadable
-// package (`package require vfb`) is made of.
+// It is wish plus one line: Vfb_Init (vfb_package.cc), which gives the widget every piece
+// this build links. The widget's objects are the ones the loadable package
+// (`package require vfb`) is made of.
 #include <tk.h>
 
-#include "vfb_widget.hh"
+#include "vfb_package.hh"
 
 namespace {
 
