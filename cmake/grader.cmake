@@ -33,16 +33,17 @@ endfunction()
 
 # vl_grader_reference_library(NN-name): vl_grader_reference_NN, the stage's reference,
 # whatever VL_PIECES this build uses for vl_stage_NN. When vl_stage_NN is built from the
-# reference, it is that library (an alias: the same files are not compiled twice);
-# otherwise the reference is compiled here.
+# reference, this library is made of its objects (the same files are not compiled twice);
+# otherwise the reference is compiled here. Either way it links only the framework, not
+# the other stages vl_stage_NN may link (LIBS): a grader program picks each stage's code.
 function(vl_grader_reference_library stage)
   string(SUBSTRING ${stage} 0 2 number)
   get_target_property(from_reference vl_stage_${number} VL_FROM_REFERENCE)
   if(from_reference)
-    add_library(vl_grader_reference_${number} ALIAS vl_stage_${number})
-    return()
+    set(sources $<TARGET_OBJECTS:vl_stage_${number}_objects>)
+  else()
+    file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
   endif()
-  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
   add_library(vl_grader_reference_${number} STATIC ${sources})
   target_include_directories(vl_grader_reference_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
   vl_grader_contract_dirs(contracts)  # a stage builds on the earlier stages' contracts

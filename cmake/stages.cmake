@@ -31,10 +31,11 @@ set_property(CACHE VL_PIECES PROPERTY STRINGS reference student)
 set_property(GLOBAL PROPERTY VL_STAGES "")
 
 # vl_stage(NN name [LIBS libs...]): declares stage NN-name and builds its library
-# vl_stage_NN from the pieces this build uses for it (linked with LIBS), which may use the
-# contracts of every stage declared before it. The library's property
-# VL_FROM_REFERENCE is ON when those are the reference's (then the grader reuses it as the
-# stage's reference instead of compiling the same files again).
+# vl_stage_NN from the pieces this build uses for it (linked with LIBS), compiled once as
+# the object library vl_stage_NN_objects; its code may use the contracts of every stage
+# declared before it. The library's property VL_FROM_REFERENCE is ON when those are the
+# reference's: then the grader makes the stage's reference library from the same objects
+# instead of compiling the same files again.
 function(vl_stage number name)
   cmake_parse_arguments(S "" "" "LIBS" ${ARGN})
   if(NOT number MATCHES "^[0-9][0-9]$" OR NOT name MATCHES "^[a-z][a-z0-9_-]*$")
@@ -66,18 +67,20 @@ function(vl_stage number name)
   if(NOT sources)
     message(FATAL_ERROR "stage ${number}: no .cc files in ${source_dir}")
   endif()
-  add_library(vl_stage_${number} STATIC ${sources})
+  add_library(vl_stage_${number}_objects OBJECT ${sources})
   # The contract header comes first, so a copy of it in source_dir is never used.
-  target_include_directories(vl_stage_${number} BEFORE PUBLIC ${stage_dir})
-  target_link_libraries(vl_stage_${number} PUBLIC vl_framework ${S_LIBS} PRIVATE vl_warnings)
+  target_include_directories(vl_stage_${number}_objects BEFORE PUBLIC ${stage_dir})
+  target_link_libraries(vl_stage_${number}_objects PUBLIC vl_framework ${S_LIBS} PRIVATE vl_warnings)
   # A stage builds on the stages before it (stage 03's box is made of stage 02's polygons):
   # it sees their contracts. It does not link their libraries, so that any mix of a
   # stage's code with the others' links (the grader puts a submission or the stubs of one
   # stage beside the reference of the rest); programs link every stage, the later first.
   get_property(earlier GLOBAL PROPERTY VL_STAGES)
   foreach(stage IN LISTS earlier)
-    target_include_directories(vl_stage_${number} PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
+    target_include_directories(vl_stage_${number}_objects PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
   endforeach()
+  add_library(vl_stage_${number} STATIC)
+  target_link_libraries(vl_stage_${number} PUBLIC vl_stage_${number}_objects)
   get_filename_component(real_source_dir ${source_dir} REALPATH)
   get_filename_component(real_reference_dir ${reference_dir} REALPATH)
   if(real_source_dir STREQUAL real_reference_dir)
