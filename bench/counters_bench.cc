@@ -53,12 +53,12 @@ void baseline_uncounted(benchmark::State& state) {
     for (const auto& s : spheres) list.push_back(s.get());
     for (auto _ : state) {
         for (const vl::ray& r : rays()) {
-            vl::intersection best;
+            vl::intersection nearest;
             for (const bench::uncounted_base* s : list) {
                 const vl::intersection i = s->intersect(r);
-                if (i.nearer_than(best)) best = i;
+                if (i.nearer_than(nearest)) nearest = i;
             }
-            benchmark::DoNotOptimize(best);
+            benchmark::DoNotOptimize(nearest);
         }
     }
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * rays().size() * list.size()));
@@ -70,12 +70,12 @@ void counted_intersect(benchmark::State& state) {
     for (const auto& s : spheres) list.push_back(s.get());
     for (auto _ : state) {
         for (const vl::ray& r : rays()) {
-            vl::intersection best;
+            vl::intersection nearest;
             for (const vl::rtab_component* s : list) {
                 const vl::intersection i = s->intersect(r);
-                if (i.nearer_than(best)) best = i;
+                if (i.nearer_than(nearest)) nearest = i;
             }
-            benchmark::DoNotOptimize(best);
+            benchmark::DoNotOptimize(nearest);
         }
     }
     state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * rays().size() * list.size()));
