@@ -43,7 +43,13 @@ scene_outcome render_and_compare(const fs::path& render_program, const rubric_sc
     const std::string stem = scene.id;
     const std::string scene_inside = "/vl/scene/" + scene.file.filename().string();
     run_request rq;
-    rq.mounts = {{render_program, "/vl/bin/render", false}, {scene.file, scene_inside, false}};
+    // A public scene comes with its folder (read-only), so its `include`s of the stage's
+    // public parts resolve; the students have that folder anyway. A hidden scene comes
+    // alone: no other hidden scene is visible to the submission's code.
+    if (scene.is_public)
+        rq.mounts = {{render_program, "/vl/bin/render", false}, {scene.file.parent_path(), "/vl/scene", false}};
+    else
+        rq.mounts = {{render_program, "/vl/bin/render", false}, {scene.file, scene_inside, false}};
     // The image goes to a pipe: out.png is a link to fd 3, so nothing is written to disk.
     rq.symlinks = {{"/proc/self/fd/3", "/scratch/out.png"}};
     rq.argv = {"/vl/bin/render", scene_inside, "-o", "/scratch/out.png", "--threads", "1"};

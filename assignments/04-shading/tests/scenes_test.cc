@@ -1,0 +1,33 @@
+// Renders each public scene of stage 04 with this build's pieces and compares it with the
+// reference image stored beside it (made by tools/update-reference-images from the
+// reference build). When one fails, render the scene with rt and look at it next to the
+// .png. (The grader renders these scenes too, as graded scenes of their own.)
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "all_pieces.hh"
+#include "image_compare.hh"
+
+using namespace vl;
+
+TEST_CASE("scene: each public scene of stage 04 renders like its reference image", "[04][scene][render]") {
+    // The scenes and their PNGs are in ../scenes (not its parts/ folder, which holds
+    // pieces the scenes include); tools/update-reference-images makes the PNGs with the
+    // reference pieces.
+    const std::filesystem::path scenes = std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes";
+    int rendered = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(scenes)) {
+        if (entry.path().extension() != ".ray_trace") continue;
+        const std::filesystem::path png = std::filesystem::path(entry.path()).replace_extension(".png");
+        DYNAMIC_SECTION(entry.path().filename().string()) {
+            if (!std::filesystem::exists(png))
+                FAIL(entry.path().filename().string() << " has no reference image " << png.filename().string());
+            const image_difference d = compare_render(entry.path(), png, all_pieces());
+            INFO(entry.path().filename().string() << ": " << d.summary);
+            CHECK(renders_match(d));
+        }
+        ++rendered;
+    }
+    CHECK(rendered >= 5);
+}

@@ -1,0 +1,509 @@
+#pragma once
+// Helpers shared by stage 04's hidden tests (grader only): probe objects of types your
+// tracer has never seen, answer keys in long double, and ways to say in words what a
+// trace() returned.
+//
+// Every object a test gives your tracer is a probe: an infinite plane with a chosen point,
+// normal, interior and surface; a sphere whose hits are computed in long double; a root
+// LIST that answers composite_only when nothing is hit; a watcher that is never hit but
+// writes down every ray the tracer asks the scene about (so a test can read the direction
+// of a reflected or transmitted ray). The tracer can reach them only through
+// rtab_component, as the contract asks.
+//
+// "Emitters": with no lights and ambient (1, 1, 1), an object with kdr 1 and nothing else
+// returns exactly its clr() (ambient * c * kdr), so a test can see which object a bounced
+// ray reached by its colour.
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <numbers>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "grading.hh"
+#include "stage_04.hh"
+#include "vl/object_list.hh"
+#include "vl/primitive.hh"
+#include "vl/scene.hh"
+#include "vl/tracer.hh"
+
+namespace vl::stage04::hidden {
+
+using grading::num;
+using grading::show;
+
+using real = long double;
+
+// --- long-double vectors and colours --------------------------------------------------------
+
+struct rvec {
+    real x = 0, y = 0, z = 0;
+};
+inline rvec to_r(const point& p) {
+    const point h = p.homogenized();
+    return {h.x, h.y, h.z};
+}
+inline rvec to_r(const vector& v) { return {v.x, v.y, v.z}; }
+inline rvec operator-(const rvec& a, const rvec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline rvec operator+(const rvec& a, const rvec& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline rvec operator-(const rvec& a) { return {-a.x, -a.y, -a.z}; }
+inline rvec operator*(real s, const rvec& a) { return {s * a.x, s * a.y, s * a.z}; }
+inline real dot(const rvec& a, const rvec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline real len(const rvec& a) { return std::sqrt(dot(a, a)); }
+inline rvec unit(const rvec& a) { return (1 / len(a)) * a; }
+inline point to_point(const rvec& a) {
+    return point(static_cast<double>(a.x), static_cast<double>(a.y), static_cast<double>(a.z));
+}
+inline vector to_vector(const rvec& a) {
+    return vector(static_cast<double>(a.x), static_cast<double>(a.y), static_cast<double>(a.z));
+}
+/// A point or direction in words; a coordinate below 1e-15 of the largest is shown as 0.
+inline std::string show(const rvec& a) {
+    const real big = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
+    const auto one = [&](real x) { return num(std::fabs(x) < 1e-15L * big ? 0.0 : static_cast<double>(x)); };
+    return "(" + one(a.x) + ", " + one(a.y) + ", " + one(a.z) + ")";
+}
+inline real degrees(real radians) { return radians * 180 / std::numbers::pi_v<real>; }
+inline real radians(real deg) { return deg * std::numbers::pi_v<real> / 180; }
+
+/// A colour in long double (red, green, blue; alpha is not graded).
+struct rgb {
+    real r = 0, g = 0, b = 0;
+};
+inline rgb of(const color& c) { return {c.r, c.g, c.b}; }
+inline rgb operator+(const rgb& x, const rgb& y) { return {x.r + y.r, x.g + y.g, x.b + y.b}; }
+inline rgb operator*(const rgb& x, const rgb& y) { return {x.r * y.r, x.g * y.g, x.b * y.b}; }
+inline rgb operator*(real s, const rgb& x) { return {s * x.r, s * x.g, s * x.b}; }
+inline std::string show(const rgb& c) {
+    return "(" + num(static_cast<double>(c.r)) + ", " + num(static_cast<double>(c.g)) + ", " +
+           num(static_cast<double>(c.b)) + ")";
+}
+inline std::string show(const color& c) { return "(" + num(c.r) + ", " + num(c.g) + ", " + num(c.b) + ")"; }
+
+/// True when each of red, green and blue of `got` is within `tol` of `want` (never NaN).
+inline bool same(const color& got, const rgb& want, real tol) {
+    return std::fabs(got.r - want.r) <= tol && std::fabs(got.g - want.g) <= tol && std::fabs(got.b - want.b) <= tol;
+}
+/// True when `got` and `want` differ by at most `tol` in each channel.
+inline bool same(const color& got, const color& want, double tol) {
+    return std::fabs(got.r - want.r) <= tol && std::fabs(got.g - want.g) <= tol && std::fabs(got.b - want.b) <= tol;
+}
+
+// --- Fresnel, both ways -----------------------------------------------------------------------
+
+/// The reflectance where a ray in a medium of index eta1 meets one of index eta2, with
+/// `cos_i` the cosine of its angle of incidence; 1 for total internal reflection.
+/// Schlick's approximation with the cosine on the side of the lower index.
+inline real schlick(real eta1, real eta2, real cos_i) {
+    const real eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
+    if (k < 0) return 1;
+    const real cos_t = std::sqrt(k), r0 = ((eta1 - eta2) / (eta1 + eta2)) * ((eta1 - eta2) / (eta1 + eta2));
+    const real c = eta1 <= eta2 ? cos_i : cos_t;
+    return r0 + (1 - r0) * std::pow(1 - c, 5);
+}
+/// The exact Fresnel equations for unpolarised light.
+inline real fresnel_exact(real eta1, real eta2, real cos_i) {
+    const real eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
+    if (k < 0) return 1;
+    const real cos_t = std::sqrt(k);
+    const real rs = (eta1 * cos_i - eta2 * cos_t) / (eta1 * cos_i + eta2 * cos_t);
+    const real rp = (eta1 * cos_t - eta2 * cos_i) / (eta1 * cos_t + eta2 * cos_i);
+    return (rs * rs + rp * rp) / 2;
+}
+/// What the contract accepts for F: anything between Schlick's value and the exact one,
+/// widened by 0.02 on each side.
+struct band {
+    real lo = 0, hi = 0;
+    bool holds(real x) const { return x >= lo && x <= hi; }
+    std::string words() const {
+        return "between " + num(static_cast<double>(lo)) + " and " + num(static_cast<double>(hi));
+    }
+};
+inline band fresnel_band(real eta1, real eta2, real cos_i) {
+    const real s = schlick(eta1, eta2, cos_i), e = fresnel_exact(eta1, eta2, cos_i);
+    return {std::min(s, e) - 0.02L, std::max(s, e) + 0.02L};
+}
+
+/// Snell's law in long double: the transmitted direction of unit `d` at a surface whose
+/// unit normal `n` faces the incoming ray (d.n < 0); `total` when there is none.
+struct snell {
+    bool total = true;
+    rvec t;
+};
+inline snell refract(const rvec& d, const rvec& n, real eta1, real eta2) {
+    const real eta = eta1 / eta2, cos_i = -dot(d, n), k = 1 - eta * eta * (1 - cos_i * cos_i);
+    snell out;
+    if (k < 0) return out;
+    out.total = false;
+    out.t = eta * d + (eta * cos_i - std::sqrt(k)) * n;
+    return out;
+}
+/// The mirror direction of `d` about `n`.
+inline rvec mirror(const rvec& d, const rvec& n) { return d - (2 * dot(d, n)) * n; }
+
+// --- surfaces ---------------------------------------------------------------------------------
+
+/// A surface from its values (the rest "absent").
+inline surface make_surface(const color& c, double kdr, double ksr = 0, double kst = 0, double n = 1, double ior = 1,
+                            double zero_t = rtab_component::default_zero_t) {
+    surface s;
+    s.clr = c;
+    s.kdr = kdr;
+    s.ksr = ksr;
+    s.kst = kst;
+    s.n = n;
+    s.ior = ior;
+    s.zero_t = zero_t;
+    return s;
+}
+/// An emitter of colour `c`: under ambient (1, 1, 1) and no lights it returns exactly `c`.
+inline surface emitter(const color& c) { return make_surface(c, 1); }
+
+/// Every surface value in words, for messages.
+/// The surface in words: its colour and kdr, and each other value that is not the default.
+inline std::string words(const surface& s) {
+    std::string out = "color " + show(s.clr) + ", kdr " + num(s.kdr);
+    if (s.ksr != 0) out += ", ksr " + num(s.ksr);
+    if (s.kst != 0) out += ", kst " + num(s.kst);
+    if (s.n != 1) out += ", n " + num(s.n);
+    if (s.ior != 1) out += ", ior " + num(s.ior);
+    if (s.zero_t != rtab_component::default_zero_t) out += ", zero_t " + num(s.zero_t);
+    return out;
+}
+
+// --- probes -----------------------------------------------------------------------------------
+
+/// An infinite plane through `at` with the unit normal `normal` (made unit in long
+/// double). Its interior is chosen: none (a thin sheet), or every point on the side its
+/// normal points away from (a solid half-space, as a block of glass).
+class probe_plane final : public primitive {
+public:
+    enum class interior { none, below };
+    probe_plane(const point& at, const vector& normal, const surface& s, interior inside = interior::none,
+                std::string name = "PROBEPLANE")
+        : at_(to_r(at)), n_(unit(to_r(normal))), inside_(inside), name_(std::move(name)) {
+        set_surface(s);
+    }
+    std::string type_name() const override { return name_; }
+    vector normal(const point&) const override { return to_vector(n_); }
+    bool contains(const point& p) const override {
+        return inside_ == interior::below && dot(to_r(p) - at_, n_) < 0;
+    }
+    /// The first hit beyond |zero_t()| in long double, 0 for none.
+    real exact_t(const ray& r) const {
+        const rvec o = to_r(r.origin()), d = unit(to_r(r.direction()));
+        const real dn = dot(d, n_);
+        if (dn == 0) return 0;
+        const real t = dot(at_ - o, n_) / dn;
+        return t > std::fabs(static_cast<real>(zero_t())) ? t : 0;
+    }
+    const rvec& unit_normal() const { return n_; }
+    std::string describe() const {
+        return "the plane through " + show(at_) + " with the normal " + show(n_) +
+               (inside_ == interior::below ? " (solid on the side away from its normal)" : " (a thin sheet)");
+    }
+
+private:
+    intersection find_intersection(const ray& r) const override {
+        const real t = exact_t(r);
+        return t > 0 ? intersection::at(static_cast<double>(t), this) : intersection::none();
+    }
+    rvec at_, n_;
+    interior inside_;
+    std::string name_;
+};
+
+/// A solid sphere whose hits are computed in long double.
+class probe_ball final : public primitive {
+public:
+    probe_ball(const point& center, double radius, const surface& s, std::string name = "PROBEBALL")
+        : c_(to_r(center)), radius_(radius), name_(std::move(name)) {
+        set_surface(s);
+    }
+    std::string type_name() const override { return name_; }
+    vector normal(const point& p) const override { return to_vector(unit(to_r(p) - c_)); }
+    /// Inside: nearer the centre than the radius, or than radius * (1 + slack) when a test
+    /// wants the points of the surface itself to count as inside.
+    bool contains(const point& p) const override { return len(to_r(p) - c_) < radius_ * (1 + slack); }
+    real slack = 0;
+    /// When > 0, only rays that start within this distance of the centre hit the sphere
+    /// (so a test can light its inside without the sphere blocking its own light).
+    real hit_only_from_within = 0;
+    point min_point() const override { return to_point(c_ - rvec{radius_, radius_, radius_}); }
+    point max_point() const override { return to_point(c_ + rvec{radius_, radius_, radius_}); }
+    real exact_t(const ray& r) const {
+        const rvec o = to_r(r.origin()), d = unit(to_r(r.direction())), f = o - c_;
+        if (hit_only_from_within > 0 && len(f) > hit_only_from_within) return 0;
+        const real b = dot(f, d);
+        const rvec side = f - b * d;
+        const real rr = radius_, ls = len(side);
+        const real disc = (rr - ls) * (rr + ls);
+        if (disc < 0) return 0;
+        const real q = -(b + std::copysign(std::sqrt(disc), b));
+        const real cc = (len(f) - rr) * (len(f) + rr);
+        real t0 = q == 0 ? 0 : cc / q, t1 = q;
+        if (t0 > t1) std::swap(t0, t1);
+        const real eps = std::fabs(static_cast<real>(zero_t()));
+        if (t0 > eps) return t0;
+        if (t1 > eps) return t1;
+        return 0;
+    }
+    const rvec& centre() const { return c_; }
+    double radius() const { return radius_; }
+    std::string describe() const { return "the sphere around " + show(c_) + " of radius " + num(radius_); }
+
+private:
+    intersection find_intersection(const ray& r) const override {
+        const real t = exact_t(r);
+        return t > 0 ? intersection::at(static_cast<double>(t), this) : intersection::none();
+    }
+    rvec c_;
+    double radius_;
+    std::string name_;
+};
+
+/// \brief Never hit: writes down every ray the tracer asks the scene about (primary,
+/// shadow, reflected, transmitted), in order.
+class probe_watcher final : public primitive {
+public:
+    std::string type_name() const override { return "WATCHER"; }
+    std::vector<ray> rays() const {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return rays_;
+    }
+    void clear() {
+        std::lock_guard<std::mutex> lock(mutex_);
+        rays_.clear();
+    }
+
+private:
+    intersection find_intersection(const ray& r) const override {
+        std::lock_guard<std::mutex> lock(mutex_);
+        rays_.push_back(r);
+        return intersection::none();
+    }
+    mutable std::mutex mutex_;
+    mutable std::vector<ray> rays_;
+};
+
+/// \brief A root LIST that, when none of its children is hit, answers composite_only
+/// of itself (rule 2: as if the ray had entered its bound), never a plain miss.
+class probe_root final : public object_list {
+public:
+    std::string type_name() const override { return "PROBEROOT"; }
+
+private:
+    intersection find_intersection(const ray& r) const override {
+        const intersection i = nearest_child_hit(r);
+        return i.hit() ? i : intersection::composite_only(this);
+    }
+};
+
+// --- scenes and traces ------------------------------------------------------------------------
+
+/// A scene built by a test: black ambient and background, no lights, until it says otherwise.
+struct world {
+    scene s;
+    world() {
+        s.ambient = BLACK;
+        s.background = BLACK;
+        s.lights.clear();
+    }
+    template <class P>
+    P* add(std::unique_ptr<P> p) {
+        P* raw = p.get();
+        s.root->insert(std::move(p));
+        return raw;
+    }
+    probe_plane* plane(const point& at, const vector& n, const surface& surf,
+                       probe_plane::interior inside = probe_plane::interior::none) {
+        return add(std::make_unique<probe_plane>(at, n, surf, inside));
+    }
+    probe_ball* ball(const point& c, double r, const surface& surf) {
+        return add(std::make_unique<probe_ball>(c, r, surf));
+    }
+    probe_watcher* watcher() { return add(std::make_unique<probe_watcher>()); }
+    void light(const color& c, const point& p) { s.lights.push_back(color_point(c, p)); }
+    /// For bounce tests: emitters are seen as their colours.
+    void emitters_shine() {
+        s.ambient = color(1, 1, 1);
+        s.lights.clear();
+    }
+};
+
+/// What one trace() call gave: its colour, or what it threw.
+struct traced {
+    color c;
+    std::string error;  ///< empty when trace() returned normally
+    bool ok() const { return error.empty(); }
+    std::string words() const { return ok() ? show(c) : error; }
+};
+
+/// Runs `f`, turning anything it throws into words.
+template <class F>
+std::string thrown_by(F&& f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        return std::string("trace() threw: ") + e.what();
+    } catch (...) {
+        return "trace() threw something that is not a std::exception";
+    }
+    return "";
+}
+
+/// Your tracer for `w`'s scene (made by your make_whitted_tracer), traced once.
+inline traced trace_in(const scene& s, const ray& r, int depth) {
+    traced out;
+    out.error = thrown_by([&] {
+        const std::unique_ptr<tracer> t = make_whitted_tracer(s);
+        out.c = t->trace(r, depth);
+    });
+    return out;
+}
+inline traced trace_with(const tracer& t, const ray& r, int depth) {
+    traced out;
+    out.error = thrown_by([&] { out.c = t.trace(r, depth); });
+    return out;
+}
+
+/// The ray from `from` through `to`.
+inline ray through(const point& from, const point& to) { return ray(from, to - from); }
+
+/// The hit point of a ray with a probe, in long double.
+inline rvec hit_point(const ray& r, real t) { return to_r(r.origin()) + t * unit(to_r(r.direction())); }
+
+/// Seeded random numbers.
+class dice {
+public:
+    explicit dice(unsigned seed) : engine_(seed) {}
+    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
+    vector direction() {
+        const double z = uniform(-1, 1), phi = uniform(0, 2 * std::numbers::pi);
+        const double s = std::sqrt(1 - z * z);
+        return {s * std::cos(phi), s * std::sin(phi), z};
+    }
+
+private:
+    std::mt19937_64 engine_;
+};
+
+/// Counts the inputs of a sweep and keeps the first three failures in words; report()
+/// fails the test once, with the count and those three.
+class tally {
+public:
+    explicit tally(std::string what) : what_(std::move(what)) {}
+    template <class Describe>
+    bool check(bool ok, Describe&& describe) {
+        ++tried_;
+        if (!ok) {
+            if (failed_ < 3) examples_.push_back(describe());
+            ++failed_;
+        }
+        return ok;
+    }
+    int failed() const { return failed_; }
+    int tried() const { return tried_; }
+    /// Fails when more than `allowed` inputs went wrong (0: any).
+    void report(int allowed = 0) const {
+        if (failed_ <= allowed && tried_ > 0) {
+            SUCCEED();
+            return;
+        }
+        if (tried_ == 0) {
+            FAIL_CHECK(what_ << ": nothing was checked");
+            return;
+        }
+        for (const std::string& e : examples_) FAIL_CHECK(e);
+        FAIL_CHECK(what_ << ": " << failed_ << " of " << tried_ << " went wrong"
+                         << (allowed > 0 ? " (at most " + std::to_string(allowed) + " may)" : std::string())
+                         << (failed_ > 3 ? " (the first 3 are above)" : " (above)"));
+    }
+
+private:
+    std::string what_;
+    std::vector<std::string> examples_;
+    int failed_ = 0, tried_ = 0;
+};
+
+/// Checks one traced colour against `want` within `tol`; `asked` says what was traced.
+inline void check_color(tally& t, const std::string& asked, const traced& got, const rgb& want, real tol) {
+    t.check(got.ok() && same(got.c, want, tol), [&] {
+        return "trace() should return " + show(want) + " ± " + num(static_cast<double>(tol)) + "; yours returned " +
+               got.words() + ". Asked: " + asked;
+    });
+}
+
+/// The rays in `log` that start within `tol` of `p` (the secondary rays of a hit at p).
+inline std::vector<ray> rays_from(const std::vector<ray>& log, const rvec& p, real tol) {
+    std::vector<ray> out;
+    for (const ray& r : log)
+        if (len(to_r(r.origin()) - p) <= tol) out.push_back(r);
+    return out;
+}
+/// The rays of `log`, in words (at most the first 3).
+inline std::string show_rays(const std::vector<ray>& rays) {
+    if (rays.empty()) return "no ray";
+    std::string s;
+    for (std::size_t k = 0; k < rays.size() && k < 3; ++k) s += (k ? "; " : "") + show(rays[k]);
+    if (rays.size() > 3) s += "; and " + std::to_string(rays.size() - 3) + " more";
+    return s;
+}
+
+// --- the optics bench: a block of glass between two emitters ------------------------------
+
+/// \brief Glass fills y < 0 (the plane y = 0 with the normal (0, 1, 0), solid below it);
+/// an emitter plane at y = 2 and one at y = -2. The emitter on the side a reflected ray
+/// goes to is red (1, 0, 0), the one on the side a transmitted ray goes to is green
+/// (0, 1, 0), so trace() returns (w_r, w_t, 0) times the glass's colour. There are no
+/// lights and the ambient light is (1, 1, 1); the glass has kdr 0.
+struct bench {
+    world w;
+    const probe_plane* glass = nullptr;
+    const probe_watcher* watch = nullptr;
+    bool inside = false;
+    surface glass_surface;
+
+    /// `inside`: the rays start inside the glass (below y = 0) and go up.
+    bench(const surface& s, bool from_inside, bool with_emitters = true) : inside(from_inside), glass_surface(s) {
+        w.emitters_shine();
+        glass = w.plane(point(0, 0, 0), vector(0, 1, 0), s, probe_plane::interior::below);
+        if (with_emitters) {
+            w.plane(point(0, 2, 0), vector(0, -1, 0), emitter(inside ? color(0, 1, 0) : color(1, 0, 0)));
+            w.plane(point(0, -2, 0), vector(0, 1, 0), emitter(inside ? color(1, 0, 0) : color(0, 1, 0)));
+        }
+        watch = w.watcher();
+    }
+    /// The ray that meets the surface at the origin at `theta` (radians) from the normal,
+    /// turned by `phi` about it, starting 1 away.
+    ray at_angle(real theta, real phi = 0) const {
+        const rvec d{std::sin(theta) * std::cos(phi), (inside ? 1 : -1) * std::cos(theta), std::sin(theta) * std::sin(phi)};
+        return ray(to_point(-1.0L * d), to_vector(d));
+    }
+    /// The indices on the ray's side and the far side.
+    real eta1() const { return inside ? glass_surface.ior : 1; }
+    real eta2() const { return inside ? 1 : glass_surface.ior; }
+    /// The normal facing the ray (flipped when it starts inside).
+    rvec facing() const { return inside ? rvec{0, -1, 0} : rvec{0, 1, 0}; }
+    /// The cosine of the angle of incidence of `r`, in long double.
+    real cos_i(const ray& r) const { return -dot(unit(to_r(r.direction())), facing()); }
+    /// The hit point of `r` on the glass.
+    rvec hit(const ray& r) const { return hit_point(r, glass->exact_t(r)); }
+    /// Words for a message.
+    std::string about(const ray& r, int depth) const {
+        return show(r) + " at depth " + std::to_string(depth) + (inside ? " starts inside" : " comes from outside") +
+               " glass filling y < 0 (" + words(glass_surface) + ") and meets it at " +
+               num(static_cast<double>(degrees(std::acos(std::min(static_cast<real>(1), cos_i(r)))))) +
+               " degrees from the normal (no lights, ambient 1; the reflected ray sees a red emitter, the transmitted "
+               "one a green one: the colour is c * (w_r, w_t, 0))";
+    }
+};
+
+}  // namespace vl::stage04::hidden
