@@ -143,8 +143,11 @@ TEST_CASE("local light: a light behind the surface adds neither diffuse nor high
 TEST_CASE("local light: a plane seen from behind is lit only by a light on its front side", "[04][local]") {
     // "Nothing else flips N" (step 2): a plane has no inside, so its normal is never
     // negated, even when the eye is behind it. The floor faces +y; the eye is below it.
-    // A light below (on the eye's side) adds nothing; a light above (the front side)
-    // lights the point, N.L = 1: kdr * c * Lc = 0.5 * (1, 1, 1).
+    // A light below (on the eye's side) adds nothing; a light above (the front side), at
+    // (3, 4, 0), lights the origin with L = (0.6, 0.8, 0), N.L = 0.8:
+    //   kdr * N.L * (c * Lc) = 0.5 * 0.8 * (1, 1, 1) = (0.4, 0.4, 0.4)
+    // (The light is off the ray's line: straight above, L would equal d and the half
+    // vector L - d would be the zero vector, which has no direction.)
     const ray r(point(0, -2, 0), vector(0, 1, 0));  // from below, up onto the origin
     {
         test_scene t;
@@ -157,10 +160,10 @@ TEST_CASE("local light: a plane seen from behind is lit only by a light on its f
     {
         test_scene t;
         t.add(floor_plane(surface{.kdr = 0.5}));
-        t.light(color(1, 1, 1), point(0, 5, 0));
-        CHECK_COLOR(show(r) << " hits the floor (normal +y) from below; the light at (0, 5, 0) is on its front "
-                               "side, N.L = 1: kdr * white",
-                    t.trace(r, 0), color(0.5, 0.5, 0.5), 1e-12);
+        t.light(color(1, 1, 1), point(3, 4, 0));
+        CHECK_COLOR(show(r) << " hits the floor (normal +y) from below; the light at (3, 4, 0) is on its front "
+                               "side, N.L = 0.8: kdr * N.L * white",
+                    t.trace(r, 0), color(0.4, 0.4, 0.4), 1e-12);
     }
 }
 

@@ -6,11 +6,16 @@
 /// are computed in long double and their surface values are whatever the test sets, so a
 /// test's answer depends only on your whitted.cc, never on your stage 02 or 03 code.
 ///
-/// Two tricks make most answer keys one line of arithmetic:
+/// Three tricks make most answer keys one line of arithmetic:
 /// - **Emitters.** With no lights and ambient (1, 1, 1), an object with `kdr 1` (and no
 ///   ksr or kst) sends back exactly its colour: ambient * clr * kdr = clr. The tests put
 ///   such objects where a reflected or transmitted ray should land, each in its own
 ///   colour, so the colour your tracer returns says where the ray went.
+/// - **Your own colours as the baseline.** A test of reflection or refraction looks only
+///   at what the bounce adds: it traces the same ray twice, with the mirror or glass and
+///   with the same object made dull (ksr = kst = 0), and takes the difference. And it
+///   asks your tracer what colour each emitter is (a ray aimed straight at it). So those
+///   tests depend on your bounces alone, not on your ambient or diffuse term.
 /// - **Neutral terms.** Everything a test does not look at is switched off: no ambient,
 ///   black background, depth 0, no lights, as the test says in its comments.
 
@@ -18,6 +23,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -76,6 +82,19 @@ inline bool near(const color& got, const color& want, double tolerance) {
                             << ::vl::stage04::testing::num(tolerance_) << " in each channel\n  yours is "     \
                             << ::vl::stage04::testing::show(got_color_));                                     \
         }                                                                                                     \
+    } while (false)
+
+/// Asks your tracer what colour an emitter is, `seen` (what a ray aimed straight at it
+/// returns), and stops the test unless that is clearly not black: the expected bounce is
+/// then this colour times the weights, and a tracer that returns black everywhere must not
+/// pass a test whose answer would be black too.
+#define REQUIRE_EMITTER_SEEN(what, seen)                                                                     \
+    do {                                                                                                      \
+        const ::vl::color seen_ = (seen);                                                                     \
+        if (!(::vl::stage04::testing::brightest(seen_) > 0.1))                                                \
+            FAIL(what << "\n  a ray aimed straight at this emitter (kdr 1 under ambient 1, no lights) "      \
+                      << "must see its colour, ambient * clr * kdr; yours is "                               \
+                      << ::vl::stage04::testing::show(seen_));                                                \
     } while (false)
 
 namespace vl::stage04::testing {
@@ -213,6 +232,10 @@ inline std::unique_ptr<test_plane> glass_below(const surface& looks) {
 /// lights: ambient * c * kdr with kdr 1, and nothing else.
 inline surface emitter(const color& c) { return {.clr = c, .kdr = 1}; }
 
+/// An object that sends back nothing whatever the light: black (clr (0, 0, 0)), so every
+/// term, ambient * clr * kdr among them, is 0. A ray that should see nothing ends on one.
+inline surface absorber() { return {.clr = color(0, 0, 0)}; }
+
 /// \brief A scene root that, like a bounding volume, answers composite_only(this)
 /// (intersection rule 2) when a ray passes within `radius` of `center` but hits none of
 /// its children. (The scene's plain LIST root never does; this one lets a test show your
@@ -281,5 +304,29 @@ inline color trace_in(const scene& s, const ray& r, int depth = 0) {
 
 /// The ray from `from` through `to`.
 inline ray ray_through(const point& from, const point& to) { return ray(from, to - from); }
+
+/// `looks` made dull: the same colour and kdr, but no mirror and no glass (ksr = kst = 0).
+/// The baseline a bounce test subtracts: what the surface sends back without bouncing.
+inline surface dull(surface looks) {
+    looks.ksr = 0;
+    looks.kst = 0;
+    return looks;
+}
+
+/// What the bounces add to `r` at `depth`: `with` (the scene with its mirror or glass)
+/// minus `without` (the same scene with that object dull()).
+inline color bounce_part(const test_scene& with, const test_scene& without, const ray& r, int depth) {
+    return with.trace(r, depth) - without.trace(r, depth);
+}
+
+/// The largest of red, green and blue.
+inline double brightest(const color& c) { return std::fmax(c.r, std::fmax(c.g, c.b)); }
+
+/// True when the two colours are the same bit for bit (so two NaNs of the same bits
+/// count as the same, unlike `==`).
+inline bool same_bits(const color& x, const color& y) {
+    return std::memcmp(&x.r, &y.r, sizeof x.r) == 0 && std::memcmp(&x.g, &y.g, sizeof x.g) == 0 &&
+           std::memcmp(&x.b, &y.b, sizeof x.b) == 0 && std::memcmp(&x.a, &y.a, sizeof x.a) == 0;
+}
 
 }  // namespace vl::stage04::testing

@@ -12,7 +12,10 @@
 //
 // "Emitters": with no lights and ambient (1, 1, 1), an object with kdr 1 and nothing else
 // returns exactly its clr() (ambient * c * kdr), so a test can see which object a bounced
-// ray reached by its colour.
+// ray reached by its colour. The bounce tests grade only what the bounces add: your
+// trace() of a ray minus your trace() of the same ray with the mirror's or the glass's
+// ksr and kst set to 0 (its own light), against the weights times what your tracer shows
+// for the emitter itself. So a mistake in the local light does not cost points there.
 
 #include <algorithm>
 #include <cmath>
@@ -236,11 +239,16 @@ public:
     /// When > 0, only rays that start within this distance of the centre hit the sphere
     /// (so a test can light its inside without the sphere blocking its own light).
     real hit_only_from_within = 0;
+    /// When true, only rays that start outside the sphere hit it: a ray that has entered
+    /// it passes out through the far side unhindered (so light inside it never bounces
+    /// for ever, whatever the depth).
+    bool enter_only = false;
     point min_point() const override { return to_point(c_ - rvec{radius_, radius_, radius_}); }
     point max_point() const override { return to_point(c_ + rvec{radius_, radius_, radius_}); }
     real exact_t(const ray& r) const {
         const rvec o = to_r(r.origin()), d = unit(to_r(r.direction())), f = o - c_;
         if (hit_only_from_within > 0 && len(f) > hit_only_from_within) return 0;
+        if (enter_only && len(f) < radius_) return 0;
         const real b = dot(f, d);
         const rvec side = f - b * d;
         const real rr = radius_, ls = len(side);
@@ -374,6 +382,39 @@ inline traced trace_with(const tracer& t, const ray& r, int depth) {
     return out;
 }
 
+/// What the bounces off `object` add to trace(r, depth): your trace() of r, minus your
+/// trace() of the same ray with the object's ksr and kst set to 0 (its own light alone;
+/// the bounce tests have no lights, so ksr's highlight is not in play).
+struct bounced {
+    traced all, local;
+    color part;
+    bool ok() const { return all.ok() && local.ok(); }
+    std::string words() const {
+        if (!all.ok()) return all.error;
+        if (!local.ok()) return local.error + " (with ksr = kst = 0)";
+        return show(part) + " (yours returned " + show(all.c) + ", and " + show(local.c) +
+               " for the same ray with the surface's ksr and kst set to 0)";
+    }
+};
+inline bounced bounce_part(const scene& s, primitive& object, const ray& r, int depth) {
+    bounced out;
+    out.all = trace_in(s, r, depth);
+    const surface keep = object.surf();
+    surface flat = keep;
+    flat.ksr = 0;
+    flat.kst = 0;
+    object.set_surface(flat);
+    out.local = trace_in(s, r, depth);
+    object.set_surface(keep);
+    if (out.ok()) out.part = out.all.c - out.local.c;
+    return out;
+}
+/// True when the ray from `o` along unit `d` passes farther than `r` from `c`.
+inline bool passes_by(const rvec& o, const rvec& d, const rvec& c, real r) {
+    const real u = std::max(static_cast<real>(0), dot(c - o, d));
+    return len(o + u * d - c) > r;
+}
+
 /// The ray from `from` through `to`.
 inline ray through(const point& from, const point& to) { return ray(from, to - from); }
 
@@ -457,30 +498,86 @@ inline std::string show_rays(const std::vector<ray>& rays) {
     return s;
 }
 
-// --- the optics bench: a block of glass between two emitters ------------------------------
+/// Checks that your tracer shows an emitter (traced along `r`, depth 0) as a colour with
+/// `channel` clearly lit (a tracer that returns black everywhere does not pass).
+inline bool emitter_shows(tally& t, const scene& s, const ray& r, double color::*channel, const std::string& what,
+                          traced& seen) {
+    seen = trace_in(s, r, 0);
+    const bool ok = seen.ok() && seen.c.*channel > 0.2 && seen.c.*channel < 2;
+    t.check(ok, [&] {
+        return "the emitter itself (" + what + ", kdr 1 under ambient (1, 1, 1), no lights) should show its colour; "
+               "yours returned " + seen.words() + " for " + show(r) + " aimed straight at it, at depth 0";
+    });
+    return ok;
+}
 
-/// \brief Glass fills y < 0 (the plane y = 0 with the normal (0, 1, 0), solid below it);
-/// an emitter plane at y = 2 and one at y = -2. The emitter on the side a reflected ray
-/// goes to is red (1, 0, 0), the one on the side a transmitted ray goes to is green
-/// (0, 1, 0), so trace() returns (w_r, w_t, 0) times the glass's colour. There are no
-/// lights and the ambient light is (1, 1, 1); the glass has kdr 0.
+// --- the optics bench: a block of glass and emitters placed where the rays go ---------------
+
+/// \brief Glass fills y < 0 (the plane y = 0 with the normal (0, 1, 0), solid below it).
+/// A ray meets it at the origin, from above (entering) or from below (leaving). There are
+/// no lights and the ambient light is (1, 1, 1); emitters (kdr 1) are added where a test
+/// wants to see light arrive:
+/// - red_green(): a red emitter plane on the side the reflected ray goes to, a green one on
+///   the side the transmitted ray goes to (for the tests that read the rays themselves);
+/// - both_sides(): a green emitter plane on each side, so what comes back is
+///   (w_r + w_t) times green, whichever way the light goes;
+/// - mirror_side(): a red emitter plane on the reflected side only: w_r times red;
+/// - patch(r): only a small green emitter ball where Snell's transmitted ray lands, away
+///   from every other line the light could take: w_t times green.
+/// The bounces' part of a trace is graded (see bounce_part), never the glass's own light.
 struct bench {
     world w;
-    const probe_plane* glass = nullptr;
+    probe_plane* glass = nullptr;
     const probe_watcher* watch = nullptr;
     bool inside = false;
     surface glass_surface;
+    std::string layout = "no emitters";
+    rvec land;  ///< the patch's centre
+    rvec toward;  ///< the transmitted direction that reaches it
+    static constexpr real patch_radius = 0.01L;
 
-    /// `inside`: the rays start inside the glass (below y = 0) and go up.
-    bench(const surface& s, bool from_inside, bool with_emitters = true) : inside(from_inside), glass_surface(s) {
+    /// `from_inside`: the rays start inside the glass (below y = 0) and go up.
+    bench(const surface& s, bool from_inside) : inside(from_inside), glass_surface(s) {
         w.emitters_shine();
         glass = w.plane(point(0, 0, 0), vector(0, 1, 0), s, probe_plane::interior::below);
-        if (with_emitters) {
-            w.plane(point(0, 2, 0), vector(0, -1, 0), emitter(inside ? color(0, 1, 0) : color(1, 0, 0)));
-            w.plane(point(0, -2, 0), vector(0, 1, 0), emitter(inside ? color(1, 0, 0) : color(0, 1, 0)));
-        }
         watch = w.watcher();
     }
+    /// The y of the ray's own side (+2 entering) and of the far side.
+    double near_y() const { return inside ? -2 : 2; }
+    double far_y() const { return -near_y(); }
+    void red_green() {
+        w.plane(point(0, near_y(), 0), vector(0, inside ? 1 : -1, 0), emitter(color(1, 0, 0)));
+        w.plane(point(0, far_y(), 0), vector(0, inside ? -1 : 1, 0), emitter(color(0, 1, 0)));
+        layout = "the reflected ray sees a red emitter plane, the transmitted one a green one";
+    }
+    void both_sides() {
+        w.plane(point(0, near_y(), 0), vector(0, inside ? 1 : -1, 0), emitter(color(0, 1, 0)));
+        w.plane(point(0, far_y(), 0), vector(0, inside ? -1 : 1, 0), emitter(color(0, 1, 0)));
+        layout = "a green emitter plane on each side of the surface, so the bounces bring back (w_r + w_t) * green";
+    }
+    void mirror_side() {
+        w.plane(point(0, near_y(), 0), vector(0, inside ? 1 : -1, 0), emitter(color(1, 0, 0)));
+        layout = "a red emitter plane on the reflected side only, so the bounces bring back w_r * red";
+    }
+    /// A small green emitter where Snell's transmitted ray of `r` lands, 4 from the surface;
+    /// false when there is no transmitted ray or another line of light passes near it.
+    bool patch(const ray& r, const color& c = color(0, 1, 0)) {
+        const rvec d = unit(to_r(r.direction())), p = hit(r);
+        const snell s = refract(d, facing(), eta1(), eta2());
+        if (s.total) return false;
+        toward = unit(s.t);
+        land = p + 4.0L * toward;
+        if (!passes_by(p, d, land, 3 * patch_radius) || !passes_by(p, mirror(d, facing()), land, 3 * patch_radius))
+            return false;
+        w.ball(to_point(land), static_cast<double>(patch_radius), emitter(c));
+        layout = "only a small emitter " + show(c) + " of radius " + num(static_cast<double>(patch_radius)) + " at " +
+                 show(land) + ", where Snell's transmitted ray lands: the bounces bring back w_t times it";
+        return true;
+    }
+    /// The ray along the transmitted direction, aimed straight at the patch.
+    ray at_patch() const { return ray(to_point(land - 0.5L * toward), to_vector(toward)); }
+    /// A ray aimed straight at the emitter plane on the ray's own side (the reflected side).
+    ray at_near_side() const { return ray(point(0, near_y() / 2, 0), vector(0, inside ? -1 : 1, 0)); }
     /// The ray that meets the surface at the origin at `theta` (radians) from the normal,
     /// turned by `phi` about it, starting 1 away.
     ray at_angle(real theta, real phi = 0) const {
@@ -496,14 +593,47 @@ struct bench {
     real cos_i(const ray& r) const { return -dot(unit(to_r(r.direction())), facing()); }
     /// The hit point of `r` on the glass.
     rvec hit(const ray& r) const { return hit_point(r, glass->exact_t(r)); }
+    /// What the glass's bounces add to trace(r, depth).
+    bounced bounces(const ray& r, int depth) { return bounce_part(w.s, *glass, r, depth); }
     /// Words for a message.
     std::string about(const ray& r, int depth) const {
         return show(r) + " at depth " + std::to_string(depth) + (inside ? " starts inside" : " comes from outside") +
                " glass filling y < 0 (" + words(glass_surface) + ") and meets it at " +
                num(static_cast<double>(degrees(std::acos(std::min(static_cast<real>(1), cos_i(r)))))) +
-               " degrees from the normal (no lights, ambient 1; the reflected ray sees a red emitter, the transmitted "
-               "one a green one: the colour is c * (w_r, w_t, 0))";
+               " degrees from the normal (no lights, ambient 1; " + layout + ")";
     }
 };
+
+/// A band scaled by `k` >= 0 and widened by `tol`.
+inline band scaled(const band& b, real k, real tol = 1e-9L) { return {b.lo * k - tol, b.hi * k + tol}; }
+
+/// Checks what the bounces of `b`'s glass add to trace(r, depth) in one channel of an
+/// emitter seen along `at`: `weight` times your tracer's colour of that emitter, the other
+/// channels 0.
+inline void check_bounced(tally& t, bench& b, const ray& r, int depth, const ray& at, double color::*channel,
+                          const band& weight, const std::string& name, const std::string& rule) {
+    traced seen;
+    if (!emitter_shows(t, b.w.s, at, channel, name, seen)) return;
+    const bounced got = b.bounces(r, depth);
+    const band want = scaled(weight, seen.c.*channel);
+    bool ok = got.ok() && want.holds(got.part.*channel);
+    for (double color::*other : {&color::r, &color::g, &color::b})
+        if (other != channel) ok = ok && got.ok() && std::fabs(got.part.*other - seen.c.*other * (got.part.*channel / seen.c.*channel)) <= 1e-9;
+    const std::string channel_name = channel == &color::r ? "red" : channel == &color::g ? "green" : "blue";
+    t.check(ok, [&] {
+        return "the bounces should bring back w times what your tracer shows for " + name + ", " + show(seen.c) +
+               ", with w " + weight.words() + " (" + rule + "): " + channel_name + " " + want.words() +
+               ", the other channels 0; they brought back " + got.words() + ". Asked: " + b.about(r, depth);
+    });
+}
+/// w_t alone, read on the patch where the transmitted ray lands.
+inline void check_transmitted_weight(tally& t, bench& b, const ray& r, int depth, const band& w_t,
+                                     const std::string& rule) {
+    check_bounced(t, b, r, depth, b.at_patch(), &color::g, w_t, "the green patch", "w_t = kst (1 - F); " + rule);
+}
+/// w_r + w_t, read with an emitter on each side.
+inline void check_total_weight(tally& t, bench& b, const ray& r, int depth, const band& total, const std::string& rule) {
+    check_bounced(t, b, r, depth, b.at_near_side(), &color::g, total, "the green emitter planes", "w_r + w_t; " + rule);
+}
 
 }  // namespace vl::stage04::hidden

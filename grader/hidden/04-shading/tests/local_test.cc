@@ -212,12 +212,13 @@ TEST_CASE("local: a flat object seen from the side its normal points away from i
           "[04][local]") {
     tally t("a sheet seen from behind");
     // The eye is below the sheet y = 0 whose normal is (0, 1, 0); the sheet has no inside,
-    // so its normal is not flipped: a light above it lights it, one below does not.
+    // so its normal is not flipped: a light above it lights it, one below does not. No
+    // light lies on the line of a ray (there L = d, and the half vector is not defined).
     const surface s = make_surface(color(0.6, 0.8, 1), 0.8, 0.3, 0, 8);
     const point p(0.5, 0, 0.5);
     for (const point eye : {point(0, -3, 1), point(2, -1, -2)}) {
         check_plane(t, through(eye, p), point(0, 0, 0), vector(0, 1, 0), s, color(0.1, 0.1, 0.1),
-                    {color_point(color(1, 1, 1), point(1, 3, 0))}, 1e-12L, " (the light is on the normal's side: it lights the sheet)");
+                    {color_point(color(1, 1, 1), point(1.5, 3, 0.2))}, 1e-12L, " (the light is on the normal's side: it lights the sheet)");
         check_plane(t, through(eye, p), point(0, 0, 0), vector(0, 1, 0), s, color(0.1, 0.1, 0.1),
                     {color_point(color(1, 1, 1), point(1, -3, 0))}, 1e-12L, " (the light is on the eye's side, behind the normal: ambient only)");
     }
