@@ -37,6 +37,8 @@
 ///    between L and the direction to the viewer. A light with `N.L <= 0` is behind the
 ///    surface and adds nothing, neither diffuse nor highlight. Lights do not fade with
 ///    distance. kdt (diffuse transmission) is not part of this model and is not read.
+///    (H is undefined only when L == d, a light exactly behind a flat surface on the line
+///    of the ray; no test asks for that case.)
 /// 4. **Shadows.** A light is seen when the *shadow ray* from P towards Lp hits nothing
 ///    before it reaches the light: a hit beyond the light, or only a composite's bound
 ///    (`!hit()`), does not block it. Every object blocks, transparent or not.
