@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
@@ -18,11 +19,15 @@
 
 #include "export_kit.hh"
 #include "grade.hh"
+#include "image_compare.hh"
 #include "install.hh"
 #include "report_html.hh"
 #include "results_json.hh"
 #include "sandbox.hh"
 #include "terminal_summary.hh"
+#include "vl/flip.hh"
+#include "vl/image_io.hh"
+#include "vl/ssim.hh"
 
 namespace {
 
@@ -37,10 +42,12 @@ struct usage_error {
 
 using arguments = std::vector<std::string>;
 
-/// \brief One subcommand.
+/// \brief One subcommand: `run` needs the built grader's installation (grader.toml);
+/// `run_alone`, when set instead, needs nothing but its arguments.
 struct command {
     std::string name, synopsis, summary;
     std::function<int(const installation&, const arguments&)> run;
+    std::function<int(const arguments&)> run_alone = nullptr;
 };
 
 /// Takes `--flag VALUE` out of `args`; empty when absent.
@@ -376,6 +383,55 @@ int list_command(const installation& in, const arguments& args) {
     return 0;
 }
 
+/// Reads the image `file` for imgdiff; `role` ("reference" or "test") names it in errors.
+vl::image read_for_imgdiff(const std::string& file, const char* role) {
+    try {
+        return vl::read_image(file);
+    } catch (const vl::image_error& e) {
+        throw grader_error(std::string("cannot read the ") + role + " image: " + e.what() +
+                           " (give the path of a PNG, PPM, PGM, PBM or PFM file)");
+    }
+}
+
+/// `imgdiff REF TEST [--map OUT.png] [--ppd N]`: LDR-FLIP, SSIM and the largest 8-bit
+/// difference of TEST against REF, on one line (docs/image-metrics.md explains them).
+int imgdiff_command(arguments args) {
+    const std::string map = take_option(args, "--map");
+    const std::string ppd_text = take_option(args, "--ppd");
+    expect_count(args, 2);
+    vl::flip_options options;
+    if (!ppd_text.empty()) {
+        char* end = nullptr;
+        options.pixels_per_degree = std::strtod(ppd_text.c_str(), &end);
+        if (end == ppd_text.c_str() || *end != '\0' || !(options.pixels_per_degree > 0) ||
+            !std::isfinite(options.pixels_per_degree))
+            throw usage_error{"--ppd needs a positive number of pixels per degree, not '" + ppd_text + "'"};
+    }
+    const vl::image reference = read_for_imgdiff(args[0], "reference");
+    const vl::image test = read_for_imgdiff(args[1], "test");
+    if (reference.width() != test.width() || reference.height() != test.height())
+        throw grader_error("the images differ in size: the reference " + args[0] + " is " +
+                           std::to_string(reference.width()) + " x " + std::to_string(reference.height()) +
+                           " pixels and the test " + args[1] + " is " + std::to_string(test.width()) + " x " +
+                           std::to_string(test.height()) +
+                           " pixels; imgdiff compares images pixel by pixel: render the test at the reference's size");
+    const vl::flip_result f = vl::flip(reference, test, options);
+    const vl::ssim_result s = vl::ssim(reference, test);
+    const vl::image_difference d = vl::compare_images(reference, test);
+    if (!map.empty()) {
+        try {
+            vl::write_image(map, vl::flip_error_map(f));
+        } catch (const vl::image_error& e) {
+            throw grader_error(std::string("cannot write the error map: ") + e.what());
+        }
+    }
+    std::printf("flip_mean=%.6f ssim=%.6f max_abs=%d flip_weighted_median=%.6f flip_weighted_q1=%.6f "
+                "flip_weighted_q3=%.6f flip_max=%.6f mean_abs=%.4f\n",
+                f.mean, s.mean, d.max_abs, f.weighted_median, f.weighted_quartile_1, f.weighted_quartile_3, f.max,
+                d.mean_abs);
+    return 0;
+}
+
 const std::vector<command>& commands() {
     static const std::vector<command> table = {
         {"demo", "demo", "grade the bundled sample submissions and print where their reports are", demo_command},
@@ -390,6 +446,10 @@ const std::vector<command>& commands() {
          "grade one calibration or attack case (grader/tests/submissions/NN-name/CASE, grader/tests/adversarial/...) "
          "and check it against its expected.toml; --no-policy tests the sandbox alone ([sandbox] in expected.toml)",
          calibrate_command},
+        {"imgdiff", "imgdiff REF TEST [--map OUT.png] [--ppd N]",
+         "how different TEST looks from REF: prints flip_mean (LDR-FLIP, 0 same), ssim (1 same), max_abs (8-bit "
+         "levels) and FLIP's weighted percentiles on one line; --map writes the FLIP error map (magma colours)",
+         nullptr, imgdiff_command},
     };
     return table;
 }
@@ -416,6 +476,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
+        if (c->run_alone) return c->run_alone(arguments(all.begin() + 1, all.end()));
         const installation in = vl::grader::load_installation();
         return c->run(in, arguments(all.begin() + 1, all.end()));
     } catch (const usage_error& e) {
