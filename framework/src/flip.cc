@@ -161,7 +161,8 @@ plane convolve(const plane& in, const std::vector<double>& kx, const std::vector
 // The contrast sensitivity filters (colour pipeline, "spatial filtering"). Each channel's
 // filter is a sum of Gaussians in the spatial domain, g(x) = a sqrt(pi / b) exp(-pi^2 x^2 / b)
 // with x in degrees of visual angle; the constants fit the contrast sensitivity of the
-// achromatic, red-green and blue-yellow channels (Table 1 of the paper):
+// achromatic, red-green and blue-yellow channels (the paper's values, also the published
+// tool's):
 //   Y   a1 = 1,    b1 = 0.0047, a2 = 0,    b2 = 1e-5 (unused)
 //   Cx  a1 = 1,    b1 = 0.0053, a2 = 0,    b2 = 1e-5 (unused)
 //   Cz  a1 = 34.1, b1 = 0.04,   a2 = 13.5, b2 = 0.025

@@ -1,6 +1,6 @@
 // The grader's command line: `grader/run COMMAND ...` (see grader/README.md). Each
-// command is one entry of the table below, so new ones (imgdiff, roster, gradescope)
-// slot in beside the others.
+// command is one entry of the table below, so new ones (roster, gradescope) slot in
+// beside the others, like imgdiff.
 #include <unistd.h>
 
 #include <algorithm>
