@@ -71,7 +71,7 @@ const xyz_to_rgb_matrix xyz_to_rgb;
 // The reference white: XYZ of linear RGB (1, 1, 1).
 const triple white = multiply(rgb_to_xyz, {1.0, 1.0, 1.0});
 
-// YCxCz (Johnson and Fairchild's opponent space): CIELab's formulas *without* the cube
+// YCxCz (a linear opponent colour space): CIELab's formulas *without* the cube
 // root, so it is linear in XYZ and filtering in it is filtering light. Y is 116 y - 16,
 // Cx (red-green) 500 (x - y), Cz (blue-yellow) 200 (y - z), with x = X / Xn etc.
 triple xyz_to_ycxcz(const triple& xyz) {
