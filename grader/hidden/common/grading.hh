@@ -64,6 +64,32 @@ inline std::string show(const matrix& m) {
 /// True when `got` is within `tolerance` of `want` (never for NaN).
 inline bool near(double got, double want, double tolerance) { return std::abs(got - want) <= tolerance; }
 
+
+/// \name Sweeps and charts
+/// A sweep test ([sweep] tag) moves one parameter to where naive methods break (a
+/// sphere's distance over its radius, a matrix's condition number, ...) and reports, for
+/// each value, how many of its trials went wrong; the rubric's [[sweep]] says over which
+/// values a correct method must not fail, and is the graded item. A chart test ([chart])
+/// reports measured points (tests per ray against N) that the report only draws.
+/// Both report through Catch2 warnings, which the grader reads from the XML report; the
+/// submission's points must be the same values, in the same order, as the reference's.
+/// A sweep test checks nothing itself (it passes whatever it measures) and must be
+/// deterministic: fixed seeds, fixed trial counts.
+///@{
+/// At parameter value `x`, `failures` of `trials` went wrong. `example` (optional) says
+/// what one failure looked like, in the student's terms, for the report.
+inline void sweep_point(double x, long trials, long failures, const std::string& example = "") {
+    WARN("vl-sweep x=" << num(x) << " trials=" << trials << " failures=" << failures
+                       << (example.empty() ? "" : " example=") << example);
+    SUCCEED();
+}
+/// One measured point of the curve `series` (a word: letters, digits, '-', '_').
+inline void chart_point(const std::string& series, double x, double y) {
+    WARN("vl-chart series=" << series << " x=" << num(x) << " y=" << num(y));
+    SUCCEED();
+}
+///@}
+
 }  // namespace vl::grading
 
 /// Checks `condition`; when it is false, the test fails with `message` (streamed) and goes on.
