@@ -1,0 +1,55 @@
+#pragma once
+/// \file
+/// \brief Line charts drawn by gnuplot: a sweep's failure rate, cost against error, tests
+/// per ray against N. The grader inlines the SVG in report.html; the standalone commands
+/// write the SVG and a PNG beside it.
+///
+/// A chart is its series of (x, y) points. draw_chart writes three files that each stand
+/// on their own: OUT.tsv (the numbers, one block per series, for any other tool),
+/// OUT.gp (the gnuplot script that reads OUT.tsv, to restyle by hand) and, when gnuplot
+/// is installed (Debian `gnuplot-nox`), OUT.svg and OUT.png.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vl {
+
+/// \brief One curve of a chart.
+struct chart_series {
+    std::string name;                              ///< the legend's text
+    std::vector<std::pair<double, double>> points; ///< (x, y), drawn in this order
+    /// A measured reference is drawn as a line; what is compared with it (a submission's
+    /// points) as marks over it.
+    enum class style { line, marks, line_and_marks } look = style::line_and_marks;
+};
+
+/// \brief A whole chart.
+struct chart {
+    std::string title, x_label, y_label;
+    bool log_x = false, log_y = false;
+    std::vector<chart_series> series;
+    /// A range of x to shade (a sweep's "a correct method is stable here"), with its label.
+    std::optional<std::pair<double, double>> band;
+    std::string band_label;
+    int width = 720, height = 420;  ///< pixels of the PNG and the SVG's view box
+};
+
+/// \brief What draw_chart wrote.
+struct chart_files {
+    std::filesystem::path tsv, script, svg, png;  ///< svg and png are empty without gnuplot
+    std::string svg_text;                         ///< the SVG itself, to inline in HTML
+    std::string problem;                          ///< why there is no SVG/PNG, or ""
+};
+
+/// True when a gnuplot program is on PATH.
+bool gnuplot_available();
+
+/// Writes `out_stem`.tsv and .gp, and with gnuplot .svg and .png. Non-finite points and,
+/// on a log axis, points <= 0 are left out (the TSV keeps them, as "nan"). Throws
+/// vl::file_error when a file cannot be written; a failure of gnuplot itself is reported
+/// in chart_files::problem, never thrown.
+chart_files draw_chart(const chart& c, const std::filesystem::path& out_stem);
+
+}  // namespace vl
