@@ -29,6 +29,7 @@ struct chart_series {
 struct chart {
     std::string title, x_label, y_label;
     bool log_x = false, log_y = false;
+    std::optional<std::pair<double, double>> y_range;  ///< fixed y limits (a rate: 0 to 1), else gnuplot's
     std::vector<chart_series> series;
     /// A range of x to shade (a sweep's "a correct method is stable here"), with its label.
     std::optional<std::pair<double, double>> band;
