@@ -33,6 +33,13 @@ std::string trim(std::string s) {
     return s;
 }
 
+/// `s` without the blanks around it (Catch2 indents the text of an element).
+std::string trim_all(const std::string& s) {
+    const auto first = s.find_first_not_of(" \t\n\r");
+    if (first == std::string::npos) return {};
+    return s.substr(first, s.find_last_not_of(" \t\n\r") - first + 1);
+}
+
 /// Where a failure is, for the student: a public test's file and line (they have that
 /// file), nothing for a hidden test (they do not; the test's name says which it is).
 std::string where(const pugi::xml_node& n) {
@@ -202,6 +209,8 @@ test_outcome run_test_case(const fs::path& program, const test_case_info& expect
     if (test) collect_failures(test, message, count);
     if (count > 6) message += "[... " + std::to_string(count - 6) + " more failures]\n";
     const bool success = finished && test.child("OverallResult").attribute("success").as_bool(false);
+    if (finished)
+        for (const pugi::xpath_node& w : test.select_nodes(".//Warning")) o.warnings.push_back(trim_all(w.node().text().as_string()));
     if (success && r.succeeded()) {
         o.result = test_outcome::status::passed;
     } else if (r.signal != 0 || !finished || test.child("FatalErrorCondition") ||

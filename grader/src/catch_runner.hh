@@ -24,6 +24,9 @@ struct test_outcome {
     enum class status { passed, failed, crashed, timed_out, not_run } result = status::not_run;
     std::string message;  ///< what failed, where, with which values
     double seconds = 0;
+    /// The test's Catch2 warnings, in order (a sweep or chart test reports its points so);
+    /// only from a genuine report of this test.
+    std::vector<std::string> warnings;
 };
 
 /// "passed", "failed", "crashed", "timed out", "not run".

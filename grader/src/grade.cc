@@ -13,6 +13,7 @@
 #include "sandbox.hh"
 #include "scenes.hh"
 #include "submission.hh"
+#include "sweeps.hh"
 
 namespace vl::grader {
 
@@ -76,6 +77,36 @@ void add_up(graded_submission& g, const rubric& r) {
     g.max_score = static_cast<double>(all_max) / 1000;
 }
 
+/// A file name for a test's chart: its letters and digits, the rest as '-'.
+std::string chart_stem(const std::string& test) {
+    std::string out;
+    for (const char c : test) {
+        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+        if (keep) out += c;
+        else if (!out.empty() && out.back() != '-') out += '-';
+    }
+    while (!out.empty() && out.back() == '-') out.pop_back();
+    return out.substr(0, 80);
+}
+
+/// The points of a [sweep] or [chart] test as the reference measures them. The reference
+/// must run it cleanly (and, for a sweep, be stable where the rubric says a correct method
+/// is): otherwise the test or the rubric is wrong, and no student may lose points for it.
+measured_points reference_points(const stage_info& stage, const test_case_info& test, const rubric& r,
+                                 const sandbox_capabilities& caps) {
+    const test_outcome o = run_test_case(stage.trusted_tests, test, r.test_limits, caps);
+    if (o.result != test_outcome::status::passed)
+        throw grader_error("the hidden test '" + test.name + "' " + to_string(o.result) + " with the reference: " +
+                           o.message);
+    measured_points m = read_points(o.warnings);
+    if (!m.problem.empty()) throw grader_error("the hidden test '" + test.name + "' with the reference: " + m.problem);
+    return m;
+}
+
+const test_case_info& named_test(const std::vector<test_case_info>& tests, const std::string& name) {
+    return *std::find_if(tests.begin(), tests.end(), [&](const test_case_info& t) { return t.name == name; });
+}
+
 }  // namespace
 
 graded_submission grade(const installation& in, const stage_info& stage, const fs::path& submission,
@@ -92,9 +123,9 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.assignment_dir(stage) / "scenes", in.sanitized);
     if (options.budget_seconds > 0) r.grade_budget_seconds = options.budget_seconds;
     g.title = r.title;
-    const fs::path work = options.out / "work", renders = options.out / "renders";
+    const fs::path work = options.out / "work", renders = options.out / "renders", charts = options.out / "charts";
     std::error_code ec;
-    for (const fs::path& old : {work, renders}) {
+    for (const fs::path& old : {work, renders, charts}) {
         fs::remove_all(old, ec);
         if (ec) throw grader_error("cannot clear " + old.string() + ": " + ec.message());
         fs::create_directories(old, ec);
@@ -112,6 +143,18 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
         if (!stage.tests_on_stubs.empty()) kit_passes = tests_passing_on_stubs(stage.tests_on_stubs, work / "stubs", caps);
     }
     check_rubric(r, tests);
+
+    // The reference's sweeps and charts, measured before the submission is looked at.
+    std::map<std::string, measured_points> reference;
+    for (const rubric_sweep& s : r.sweeps) {
+        measured_points m = reference_points(stage, named_test(tests, s.test), r, caps);
+        const sweep_verdict v = judge_sweep(s, m.sweep, m.sweep);
+        if (!v.passed)
+            throw grader_error(r.file.string() + ": the reference is not stable where [[sweep]] '" + s.test +
+                               "' says a correct method is: " + v.message);
+        reference[s.test] = std::move(m);
+    }
+    for (const rubric_chart& c : r.charts) reference[c.test] = reference_points(stage, named_test(tests, c.test), r, caps);
 
     // The items, in rubric order, all "not run" until they run.
     graded_item build;
@@ -143,6 +186,19 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             i.max_units = share[k];
             i.test = *mine[k];
             i.kit_passes = kit_passes.contains(mine[k]->name);
+            g.items.push_back(i);
+        }
+        for (const rubric_sweep& s : r.sweeps) {
+            if (s.category != c.name) continue;
+            graded_item i;
+            i.what = graded_item::kind::sweep;
+            i.name = s.title.starts_with("sweep") ? s.title : "sweep: " + s.title;
+            i.category = c.name;
+            i.visibility = s.visibility;
+            i.test = named_test(tests, s.test);
+            i.tags = i.test.tags;
+            i.max_units = std::llround(s.points * 1000);
+            i.reference_sweep = reference[s.test].sweep;
             g.items.push_back(i);
         }
         for (const rubric_scene& s : r.scenes) {
@@ -189,7 +245,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     run_limits limits = r.test_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
                     const test_outcome o = b.tests_program.empty()
-                                               ? test_outcome{test_outcome::status::failed, "no test program", 0}
+                                               ? test_outcome{test_outcome::status::failed, "no test program", 0, {}}
                                                : run_test_case(b.tests_program, i.test, limits, caps);
                     i.result = to_string(o.result);
                     i.message = o.message;
@@ -197,6 +253,26 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                         i.message = "the untouched stubs pass this test too (it checks what the kit supplies), "
                                     "so it is worth no points";
                     i.seconds = o.seconds;
+                } else if (i.what == graded_item::kind::sweep) {
+                    const rubric_sweep& s = *std::find_if(r.sweeps.begin(), r.sweeps.end(), [&](const rubric_sweep& x) {
+                        return x.test == i.test.name;
+                    });
+                    run_limits limits = r.test_limits;
+                    limits.wall_seconds = std::min(limits.wall_seconds, left());
+                    const test_outcome o = b.tests_program.empty()
+                                               ? test_outcome{test_outcome::status::failed, "no test program", 0, {}}
+                                               : run_test_case(b.tests_program, i.test, limits, caps);
+                    i.seconds = o.seconds;
+                    i.result = to_string(o.result);
+                    i.message = o.message;
+                    if (o.result == test_outcome::status::passed) {
+                        const measured_points m = read_points(o.warnings);
+                        i.sweep = m.sweep;
+                        const sweep_verdict v = m.problem.empty() ? judge_sweep(s, m.sweep, i.reference_sweep)
+                                                                  : sweep_verdict{false, "the sweep's report: " + m.problem};
+                        i.result = v.passed ? "passed" : "failed";
+                        i.message = v.message;
+                    }
                 } else {
                     const rubric_scene& s = *std::find_if(r.scenes.begin(), r.scenes.end(), [&](const rubric_scene& x) {
                         return x.id == i.tags[1];
@@ -212,8 +288,57 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                 }
             }
         }
+        if (b.ok)
+            for (const rubric_chart& c : r.charts) {
+                graded_chart gc;
+                gc.title = c.title;
+                gc.test = c.test;
+                gc.reference = reference[c.test].chart;
+                run_limits limits = r.test_limits;
+                limits.wall_seconds = std::min(limits.wall_seconds, left());
+                if (limits.wall_seconds < 1 || b.tests_program.empty()) {
+                    gc.message = "not measured: the time budget of this grade was spent";
+                } else {
+                    const test_outcome o = run_test_case(b.tests_program, named_test(tests, c.test), limits, caps);
+                    const measured_points m = read_points(o.warnings);
+                    if (o.result != test_outcome::status::passed)
+                        gc.message = std::string("your code's curve is missing: the measurement ") + to_string(o.result) +
+                                     (o.message.empty() ? "" : ": " + o.message);
+                    else if (!m.problem.empty())
+                        gc.message = "your code's curve is missing: " + m.problem;
+                    else
+                        gc.mine = m.chart;
+                }
+                g.charts.push_back(gc);
+            }
     } catch (const submission_error& e) {
         g.items[0].message = e.what();
+    }
+    // Charts: the submission's points over the reference's, for every sweep and chart.
+    fs::create_directories(charts, ec);
+    const std::string whose = g.built ? "this submission" : "";
+    for (graded_item& i : g.items) {
+        if (i.what != graded_item::kind::sweep) continue;
+        const rubric_sweep& s = *std::find_if(r.sweeps.begin(), r.sweeps.end(), [&](const rubric_sweep& x) {
+            return x.test == i.test.name;
+        });
+        const vl::chart_files f = draw_chart(sweep_chart(s, i.sweep, i.reference_sweep, i.sweep.empty() ? "" : whose),
+                                             charts / chart_stem(s.test));
+        i.chart_svg = f.svg;
+        i.chart_png = f.png;
+    }
+    if (g.charts.empty())
+        for (const rubric_chart& c : r.charts) g.charts.push_back({c.title, c.test, "", {}, reference[c.test].chart, {}, {}, {}});
+    for (graded_chart& gc : g.charts) {
+        const rubric_chart& c = *std::find_if(r.charts.begin(), r.charts.end(), [&](const rubric_chart& x) {
+            return x.test == gc.test;
+        });
+        const vl::chart_files f =
+            draw_chart(measured_chart(c, gc.mine, gc.reference, gc.mine.empty() ? "" : whose), charts / chart_stem(c.test));
+        gc.svg = f.svg;
+        gc.png = f.png;
+        gc.tsv = f.tsv;
+        if (!f.problem.empty() && gc.message.empty()) gc.message = f.problem;
     }
     if (!g.built)
         for (std::size_t k = 1; k < g.items.size(); ++k)

@@ -9,12 +9,13 @@
 
 #include "catch_runner.hh"
 #include "install.hh"
+#include "sweeps.hh"
 
 namespace vl::grader {
 
-/// \brief One line of the grade: the build, a hidden test or a hidden scene.
+/// \brief One line of the grade: the build, a hidden test, a hidden scene or a sweep.
 struct graded_item {
-    enum class kind { build, test, scene } what = kind::test;
+    enum class kind { build, test, scene, sweep } what = kind::test;
     std::string name, category, visibility;
     std::vector<std::string> tags;
     long long max_units = 0;         ///< the item's share of the points, in thousandths of a point
@@ -23,9 +24,19 @@ struct graded_item {
     std::string message;
     double seconds = 0;
     std::filesystem::path image, reference_image, difference_image;  ///< scenes only
-    test_case_info test;                                              ///< tests only: as the trusted program lists it
+    test_case_info test;  ///< tests and sweeps: as the trusted program lists it
+    std::vector<sweep_point> sweep, reference_sweep;  ///< sweeps only: the submission's and the reference's points
+    std::filesystem::path chart_svg, chart_png;       ///< sweeps only: the chart of both (when gnuplot drew it)
     bool kit_passes = false;  ///< tests only: the untouched stubs pass it, so it is worth 0
     bool passed() const { return result == "passed"; }
+};
+
+/// \brief A chart of the report ([[chart]] in the rubric): worth no points.
+struct graded_chart {
+    std::string title, test;
+    std::string message;                          ///< why the submission's curve is missing, or ""
+    std::vector<chart_point> mine, reference;
+    std::filesystem::path svg, png, tsv;
 };
 
 /// \brief A category's total.
@@ -42,6 +53,7 @@ struct graded_submission {
     bool built = false;
     std::vector<graded_item> items;  ///< the build first, then by category
     std::vector<category_total> categories;
+    std::vector<graded_chart> charts;
     double score = 0, max_score = 0, seconds = 0;
 };
 

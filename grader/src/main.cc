@@ -319,6 +319,24 @@ std::vector<std::string> check_expectations(const fs::path& results, const fs::p
             if (!lost && should) problems.push_back("kept full marks in category '" + name + "', where it should lose");
         }
     }
+    // lose_sweeps: exactly these sweeps (by their tests' names) fail; every other passes.
+    if (const toml::array* sweeps = t["lose_sweeps"].as_array()) {
+        std::vector<std::string> losing;
+        for (const toml::node& n : *sweeps) losing.push_back(n.value<std::string>().value_or(""));
+        std::vector<std::string> seen;
+        for (const auto& test : r["tests"]) {
+            if (!test["extra_data"].contains("sweep")) continue;
+            const std::string name = test["extra_data"]["sweep"]["test"];
+            seen.push_back(name);
+            const bool lost = test["status"] != "passed";
+            const bool should = std::find(losing.begin(), losing.end(), name) != losing.end();
+            if (lost && !should) problems.push_back("failed the sweep '" + name + "', which it should pass");
+            if (!lost && should) problems.push_back("passed the sweep '" + name + "', which it should fail");
+        }
+        for (const std::string& name : losing)
+            if (std::find(seen.begin(), seen.end(), name) == seen.end())
+                problems.push_back("lose_sweeps names '" + name + "', which is no sweep of this grade");
+    }
     return problems;
 }
 

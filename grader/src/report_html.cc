@@ -59,6 +59,16 @@ std::string image_tag(const fs::path& png, const std::string& caption) {
     return "<figure>" + body + "<figcaption>" + escape(caption) + "</figcaption></figure>";
 }
 
+/// A chart's SVG, inlined (gnuplot wrote it: the grader's own file, never the student's).
+std::string chart_tag(const fs::path& svg, const std::string& caption) {
+    if (svg.empty() || !fs::exists(svg)) return "<p class=\"meta\">(no chart: " + escape(caption) + ")</p>";
+    std::ifstream in(svg, std::ios::binary);
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    // Drop the XML prolog and the doctype: only the <svg> element belongs in HTML.
+    if (const auto at = text.find("<svg"); at != std::string::npos) text.erase(0, at);
+    return "<div class=\"chart\">" + text + "</div>";
+}
+
 std::string points(double x) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", std::round(x * 100) / 100);
@@ -88,6 +98,7 @@ figure { margin: 0; } figure img { image-rendering: pixelated; width: 216px; bor
 figcaption { font-size: .85em; color: #555; text-align: center; }
 .noimage { width: 216px; height: 162px; display: flex; align-items: center; justify-content: center; background: #f2f2f2; color: #999; }
 .notes li { color: #7a4b00; }
+.chart svg { max-width: 100%; height: auto; display: block; margin: .4em 0; }
 )";
 
 }  // namespace
@@ -141,9 +152,21 @@ std::string report_html(const graded_submission& g) {
                   << image_tag(i.reference_image, "reference") << image_tag(i.difference_image, "difference (4x)")
                   << "</div>";
             }
+            if (i.what == graded_item::kind::sweep) {
+                if (i.passed()) h << "<br><small>" << escape(i.message) << "</small>";
+                h << chart_tag(i.chart_svg, "the sweep's chart needs gnuplot");
+            }
             h << "</td><td class=\"num\">" << points(i.score) << " / " << points(i.max_score) << "</td></tr>\n";
         }
         h << "</table>\n";
+    }
+    if (!g.charts.empty()) {
+        h << "<h2>Charts <small>(worth no points)</small></h2>\n";
+        for (const graded_chart& c : g.charts) {
+            h << "<h3>" << escape(c.title) << "</h3>\n";
+            if (!c.message.empty()) h << "<p class=\"meta\">" << escape(c.message) << "</p>\n";
+            h << chart_tag(c.svg, "gnuplot is not installed; the numbers are in " + c.tsv.filename().string());
+        }
     }
     h << "<h2>How this was graded</h2>\n<p class=\"meta\">Hidden tests ran one per process; only Catch2's "
          "report of each test counts, never what the program printed. Sandbox: "

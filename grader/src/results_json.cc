@@ -54,12 +54,31 @@ std::string results_json(const graded_submission& g) {
         t["visibility"] = i.visibility;
         t["output"] = i.passed() ? i.message : i.result + (i.message.empty() ? "" : ": " + i.message);
         t["extra_data"] = {{"category", i.category}, {"result", i.result}, {"seconds", tidy(i.seconds)}};
+        if (i.what == graded_item::kind::sweep) {
+            auto curve = [](const std::vector<sweep_point>& ps) {
+                json a = json::array();
+                for (const sweep_point& p : ps) a.push_back({{"x", p.x}, {"trials", p.trials}, {"failures", p.failures}});
+                return a;
+            };
+            t["extra_data"]["sweep"] = {{"test", i.test.name}, {"submission", curve(i.sweep)},
+                                        {"reference", curve(i.reference_sweep)}};
+        }
         tests.push_back(t);
     }
     json categories = json::array();
     for (const category_total& c : g.categories)
         categories.push_back({{"name", c.name}, {"title", c.title}, {"score", tidy(c.score)},
                               {"max_score", tidy(c.max_score)}, {"passed", c.passed}, {"items", c.items}});
+    json charts = json::array();
+    for (const graded_chart& c : g.charts) {
+        auto curve = [](const std::vector<chart_point>& ps) {
+            json a = json::array();
+            for (const chart_point& p : ps) a.push_back({{"series", p.series}, {"x", p.x}, {"y", p.y}});
+            return a;
+        };
+        charts.push_back({{"title", c.title}, {"test", c.test}, {"message", c.message},
+                          {"submission", curve(c.mine)}, {"reference", curve(c.reference)}});
+    }
     json r;
     r["score"] = tidy(g.score);
     r["execution_time"] = static_cast<int>(std::ceil(g.seconds));
@@ -67,7 +86,7 @@ std::string results_json(const graded_submission& g) {
     r["stdout_visibility"] = "hidden";
     r["tests"] = tests;
     r["extra_data"] = {{"assignment", g.assignment}, {"max_score", tidy(g.max_score)}, {"built", g.built},
-                       {"categories", categories}, {"sandbox", g.sandbox}, {"submission", g.submission},
+                       {"categories", categories}, {"charts", charts}, {"sandbox", g.sandbox}, {"submission", g.submission},
                        {"graded_at", g.started_at}};
     // Messages come from compilers and student code: bytes that are not UTF-8 become U+FFFD.
     return r.dump(2, ' ', false, json::error_handler_t::replace) + "\n";

@@ -51,6 +51,92 @@ double number(const fs::path& file, const toml::table& t, const char* key, doubl
     return *v;
 }
 
+/// Refuses keys a table may not have (a typo would otherwise be silently ignored).
+void only_keys(const fs::path& file, const toml::table& t, const char* what, const std::set<std::string>& keys) {
+    for (const auto& [key, value] : t)
+        if (!keys.contains(std::string(key.str()))) {
+            std::string known;
+            for (const std::string& k : keys) known += (known.empty() ? "" : ", ") + k;
+            throw grader_error(place(file, value) + ": a " + what + " has no key '" + std::string(key.str()) +
+                               "' (it may have: " + known + ")");
+        }
+}
+
+std::string text(const fs::path& file, const toml::table& t, const char* key, bool required, const char* what) {
+    const toml::node* n = t.get(key);
+    if (!n) {
+        if (required) throw grader_error(place(file, t) + ": a " + what + " needs '" + key + "'");
+        return {};
+    }
+    if (!n->is_string() || n->value<std::string>()->empty())
+        throw grader_error(place(file, *n) + ": '" + key + "' must be a non-empty string");
+    return *n->value<std::string>();
+}
+
+bool flag(const fs::path& file, const toml::table& t, const char* key) {
+    const toml::node* n = t.get(key);
+    if (!n) return false;
+    if (!n->is_boolean()) throw grader_error(place(file, *n) + ": '" + key + "' must be true or false");
+    return *n->value<bool>();
+}
+
+void read_measurements(const fs::path& file, const toml::table& t, const std::set<std::string>& categories, rubric& r) {
+    std::set<std::string> tests;
+    if (const toml::node* n = t.get("sweep")) {
+        const toml::array* a = n->as_array();
+        if (!a || !a->is_array_of_tables()) throw grader_error(place(file, *n) + ": write each sweep as [[sweep]]");
+        for (const toml::node& e : *a) {
+            const toml::table& s = *e.as_table();
+            only_keys(file, s, "[[sweep]]",
+                      {"test", "title", "category", "points", "x_label", "log_x", "stable_from", "stable_through",
+                       "max_failure_rate", "visibility"});
+            rubric_sweep w;
+            w.test = text(file, s, "test", true, "[[sweep]]");
+            if (!tests.insert(w.test).second) throw grader_error(place(file, e) + ": test '" + w.test + "' is graded twice");
+            w.title = text(file, s, "title", false, "[[sweep]]");
+            if (w.title.empty()) w.title = w.test;
+            w.category = text(file, s, "category", true, "[[sweep]]");
+            if (!categories.contains(w.category))
+                throw grader_error(place(file, e) + ": sweep's category '" + w.category + "' is not a [[category]]");
+            w.points = number(file, s, "points", 0);
+            w.x_label = text(file, s, "x_label", true, "[[sweep]]");
+            w.log_x = flag(file, s, "log_x");
+            if (!s.get("stable_from") || !s.get("stable_through"))
+                throw grader_error(place(file, e) + ": a [[sweep]] needs stable_from and stable_through: the values "
+                                                    "over which a correct method must not fail");
+            w.stable_from = number(file, s, "stable_from", 0);
+            w.stable_through = number(file, s, "stable_through", 0);
+            if (w.stable_from > w.stable_through)
+                throw grader_error(place(file, e) + ": stable_from is above stable_through");
+            w.max_failure_rate = number(file, s, "max_failure_rate", 0);
+            if (w.max_failure_rate >= 1)
+                throw grader_error(place(file, e) + ": max_failure_rate must be below 1 (a share of the trials)");
+            const auto cat = std::find_if(r.categories.begin(), r.categories.end(),
+                                          [&](const rubric_category& c) { return c.name == w.category; });
+            w.visibility = visibility(file, s, cat->visibility);
+            r.sweeps.push_back(w);
+        }
+    }
+    if (const toml::node* n = t.get("chart")) {
+        const toml::array* a = n->as_array();
+        if (!a || !a->is_array_of_tables()) throw grader_error(place(file, *n) + ": write each chart as [[chart]]");
+        for (const toml::node& e : *a) {
+            const toml::table& s = *e.as_table();
+            only_keys(file, s, "[[chart]]", {"test", "title", "x_label", "y_label", "log_x", "log_y"});
+            rubric_chart c;
+            c.test = text(file, s, "test", true, "[[chart]]");
+            if (!tests.insert(c.test).second) throw grader_error(place(file, e) + ": test '" + c.test + "' is named twice");
+            c.title = text(file, s, "title", false, "[[chart]]");
+            if (c.title.empty()) c.title = c.test;
+            c.x_label = text(file, s, "x_label", true, "[[chart]]");
+            c.y_label = text(file, s, "y_label", true, "[[chart]]");
+            c.log_x = flag(file, s, "log_x");
+            c.log_y = flag(file, s, "log_y");
+            r.charts.push_back(c);
+        }
+    }
+}
+
 }  // namespace
 
 double rubric_category::weight_of(const test_case_info& t) const {
@@ -61,7 +147,13 @@ double rubric_category::weight_of(const test_case_info& t) const {
     return w < 0 ? 1 : w;
 }
 
+bool is_measurement(const test_case_info& t) {
+    return std::find(t.tags.begin(), t.tags.end(), "sweep") != t.tags.end() ||
+           std::find(t.tags.begin(), t.tags.end(), "chart") != t.tags.end();
+}
+
 const rubric_category* rubric::category_of(const test_case_info& t) const {
+    if (is_measurement(t)) return nullptr;
     for (const rubric_category& c : categories) {
         if (std::find(c.tests.begin(), c.tests.end(), t.name) != c.tests.end()) return &c;
         for (const std::string& tag : c.tags)
@@ -158,12 +250,14 @@ rubric load_rubric(const fs::path& file, const fs::path& public_scenes, bool san
             r.scenes.push_back(sc);
         }
     }
+    read_measurements(file, t, names, r);
     if (r.total_points > 0) {
         double sum = 0;
         for (const rubric_category& c : r.categories) sum += c.points;
         for (const rubric_scene& sc : r.scenes) sum += sc.points;
+        for (const rubric_sweep& sw : r.sweeps) sum += sw.points;
         if (std::abs(sum - r.total_points) > 1e-9)
-            throw grader_error(file.string() + ": the categories' and scenes' points add up to " + std::to_string(sum) +
+            throw grader_error(file.string() + ": the categories', scenes' and sweeps' points add up to " + std::to_string(sum) +
                                ", not total_points = " + std::to_string(r.total_points));
     }
     return r;
@@ -171,8 +265,32 @@ rubric load_rubric(const fs::path& file, const fs::path& public_scenes, bool san
 
 void check_rubric(const rubric& r, const std::vector<test_case_info>& tests) {
     std::string problems;
-    for (const test_case_info& t : tests)
-        if (!r.category_of(t)) problems += "  hidden test '" + t.name + "' is in no category\n";
+    auto find = [&](const std::string& name) {
+        return std::find_if(tests.begin(), tests.end(), [&](const test_case_info& t) { return t.name == name; });
+    };
+    auto has_tag = [](const test_case_info& t, const char* tag) {
+        return std::find(t.tags.begin(), t.tags.end(), tag) != t.tags.end();
+    };
+    for (const test_case_info& t : tests) {
+        if (is_measurement(t)) {
+            const bool swept = std::any_of(r.sweeps.begin(), r.sweeps.end(), [&](const rubric_sweep& s) { return s.test == t.name; });
+            const bool charted = std::any_of(r.charts.begin(), r.charts.end(), [&](const rubric_chart& c) { return c.test == t.name; });
+            if (has_tag(t, "sweep") && !swept) problems += "  sweep test '" + t.name + "' has no [[sweep]]\n";
+            if (has_tag(t, "chart") && !charted) problems += "  chart test '" + t.name + "' has no [[chart]]\n";
+        } else if (!r.category_of(t)) {
+            problems += "  hidden test '" + t.name + "' is in no category\n";
+        }
+    }
+    for (const rubric_sweep& s : r.sweeps) {
+        const auto t = find(s.test);
+        if (t == tests.end()) problems += "  [[sweep]] names test '" + s.test + "', which does not exist\n";
+        else if (!has_tag(*t, "sweep")) problems += "  [[sweep]] names test '" + s.test + "', which is not tagged [sweep]\n";
+    }
+    for (const rubric_chart& c : r.charts) {
+        const auto t = find(c.test);
+        if (t == tests.end()) problems += "  [[chart]] names test '" + c.test + "', which does not exist\n";
+        else if (!has_tag(*t, "chart")) problems += "  [[chart]] names test '" + c.test + "', which is not tagged [chart]\n";
+    }
     for (const rubric_category& c : r.categories) {
         for (const std::string& name : c.tests)
             if (std::none_of(tests.begin(), tests.end(), [&](const test_case_info& t) { return t.name == name; }))

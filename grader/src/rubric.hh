@@ -42,6 +42,26 @@ struct rubric_scene {
     double max_fraction_over = 0.005;
 };
 
+/// \brief A stability sweep: a hidden test tagged [sweep] moves one parameter to where
+/// naive methods fail and reports how many trials failed at each value; the sweep passes
+/// when no value in [stable_from, stable_through] fails more than max_failure_rate of its
+/// trials. It adds its points to its category.
+struct rubric_sweep {
+    std::string test;                 ///< the hidden test's exact name
+    std::string title, category, visibility, x_label;
+    double points = 0;
+    bool log_x = false;
+    double stable_from = 0, stable_through = 0;  ///< where a correct method must not fail
+    double max_failure_rate = 0;                 ///< of the trials at each value there
+};
+
+/// \brief A chart: a hidden test tagged [chart] measures curves (tests per ray against N)
+/// that the report draws, the submission's over the reference's. Worth no points.
+struct rubric_chart {
+    std::string test, title, x_label, y_label;
+    bool log_x = false, log_y = false;
+};
+
 /// \brief A whole rubric.
 struct rubric {
     std::filesystem::path file;
@@ -51,8 +71,12 @@ struct rubric {
     double grade_budget_seconds = 600;  ///< the whole grade; items left when it is spent are not run
     std::vector<rubric_category> categories;
     std::vector<rubric_scene> scenes;
+    std::vector<rubric_sweep> sweeps;
+    std::vector<rubric_chart> charts;
 
-    /// The category of test `t`: the first whose tests or tags claim it, or nullptr.
+    /// The category of test `t`: the first whose tests or tags claim it, or nullptr. A
+    /// sweep or chart test ([sweep], [chart]) is in no category: its [[sweep]] or
+    /// [[chart]] says what it is worth.
     const rubric_category* category_of(const test_case_info& t) const;
 };
 
@@ -60,8 +84,12 @@ struct rubric {
 /// file, line and problem.
 rubric load_rubric(const std::filesystem::path& file, const std::filesystem::path& public_scenes, bool sanitized);
 
-/// Checks the rubric against the hidden tests: every test has a category, every named
-/// test exists, every category earns its points somewhere. Throws grader_error.
+/// True for a test tagged [sweep] or [chart], which a [[sweep]] or [[chart]] grades.
+bool is_measurement(const test_case_info& t);
+
+/// Checks the rubric against the hidden tests: every test has a category (or, for a sweep
+/// or chart test, exactly one [[sweep]] or [[chart]]), every named test exists, every
+/// category earns its points somewhere. Throws grader_error.
 void check_rubric(const rubric& r, const std::vector<test_case_info>& tests);
 
 }  // namespace vl::grader
