@@ -22,24 +22,36 @@ struct chart_series {
     std::vector<std::pair<double, double>> points; ///< (x, y), drawn in this order
     /// A measured reference is drawn as a line; what is compared with it (a submission's
     /// points) as marks over it.
-    enum class style { line, marks, line_and_marks } look = style::line_and_marks;
+    enum class style {
+        line,           ///< a line through the points
+        marks,          ///< a mark at each point, no line
+        line_and_marks  ///< both
+    };
+    style look = style::line_and_marks;  ///< how the curve is drawn
 };
 
 /// \brief A whole chart.
 struct chart {
-    std::string title, x_label, y_label;
-    bool log_x = false, log_y = false;
+    std::string title;    ///< above the plot
+    std::string x_label;  ///< under the x axis
+    std::string y_label;  ///< beside the y axis
+    bool log_x = false;   ///< x on a logarithmic scale (points with x <= 0 are left out)
+    bool log_y = false;   ///< y on a logarithmic scale (points with y <= 0 are left out)
     std::optional<std::pair<double, double>> y_range;  ///< fixed y limits (a rate: 0 to 1), else gnuplot's
-    std::vector<chart_series> series;
+    std::vector<chart_series> series;  ///< the curves, in the legend's order
     /// A range of x to shade (a sweep's "a correct method is stable here"), with its label.
     std::optional<std::pair<double, double>> band;
-    std::string band_label;
-    int width = 720, height = 420;  ///< pixels of the PNG and the SVG's view box
+    std::string band_label;  ///< the band's legend text
+    int width = 720;   ///< pixels across the PNG and the SVG's view box
+    int height = 420;  ///< pixels down the PNG and the SVG's view box
 };
 
 /// \brief What draw_chart wrote.
 struct chart_files {
-    std::filesystem::path tsv, script, svg, png;  ///< svg and png are empty without gnuplot
+    std::filesystem::path tsv;     ///< the numbers
+    std::filesystem::path script;  ///< the gnuplot script
+    std::filesystem::path svg;     ///< the SVG, empty without gnuplot
+    std::filesystem::path png;     ///< the PNG, empty without gnuplot
     std::string svg_text;                         ///< the SVG itself, to inline in HTML
     std::string problem;                          ///< why there is no SVG/PNG, or ""
 };
