@@ -72,6 +72,10 @@ public:
     }
     int failed() const { return failed_; }
     int tried() const { return tried_; }
+    /// The first failure in words, or "".
+    std::string first_failure() const { return examples_.empty() ? std::string() : examples_.front(); }
+    /// Reports the count as one point of a sweep (the test passes whatever it is).
+    void report_sweep_point(double x) const { vl::grading::sweep_point(x, tried_, failed_, first_failure()); }
 
     /// Passes when nothing failed; otherwise one failure per example kept (each read on
     /// its own), then the count.

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -561,4 +562,95 @@ TEST_CASE("triangle: write() keeps every digit of the vertices and of each surfa
         check_same_triangle(t, *back, *original, k, "the TRIANGLE read back from \"" + text + "\"");
     }
     t.report();
+}
+
+// --- stability sweep -------------------------------------------------------------------------
+
+TEST_CASE("sweep: triangle: rays aimed 1e-17 to 0.1 of a triangle's size from a shared edge or vertex", "[02][sweep]") {
+    // Fans of triangles around a hub, slightly bumpy, at various places and sizes. Each ray
+    // crosses a fan at a point x * size from a shared edge (a spoke) or from the shared
+    // vertex (the hub), inside one of the triangles next to it; it must hit at least one
+    // triangle of the fan. At x = 1e-17 the point is on the edge up to rounding: a test
+    // that is exact there (the same edge function for both neighbours, ties counted as
+    // inside) leaves no gap; the Moller-Trumbore test, which computes each triangle's
+    // coordinates its own way, lets some rays through.
+    struct fan {
+        point hub;
+        std::vector<point> rim;
+        double size = 0;
+        vector up;
+        mesh triangles;
+        std::string problem;
+    };
+    sampler random(27);
+    std::vector<fan> fans;
+    for (int f = 0; f < 6; ++f) {
+        fan n;
+        n.size = std::pow(10.0, random.uniform(-1, 2));
+        n.hub = random.in_box(f % 2 == 0 ? 10 : 1e3);
+        n.up = random.direction();
+        vector u, v;
+        plane_axes(n.up, u, v);
+        const int corners = 6 + f;
+        for (int k = 0; k < corners; ++k) {
+            const double angle = 2 * std::numbers::pi * (k + random.uniform(-0.2, 0.2)) / corners;
+            n.rim.push_back(n.hub + n.size * (std::cos(angle) * u + std::sin(angle) * v + random.uniform(-0.15, 0.15) * n.up));
+        }
+        try {
+            for (std::size_t k = 0; k < n.rim.size(); ++k)
+                n.triangles.push_back(make_triangle(n.hub, n.rim[k], n.rim[(k + 1) % n.rim.size()]));
+        } catch (const std::exception& e) {
+            n.problem = std::string("make_triangle threw: ") + e.what();
+        } catch (...) {
+            n.problem = "make_triangle threw";
+        }
+        fans.push_back(std::move(n));
+    }
+    for (int e10 = -17; e10 <= -1; ++e10) {
+        const double x = std::pow(10.0, e10);
+        tally t("rays " + num(x) + " of the size from a shared edge or vertex");
+        for (const fan& n : fans) {
+            const std::size_t count = n.rim.size();
+            for (int k = 0; k < 40; ++k) {
+                const std::size_t j = static_cast<std::size_t>(random.uniform(0, static_cast<double>(count))) % count;
+                const point& a = n.rim[j];
+                const point& b = n.rim[(j + 1) % count];
+                // Into triangle j (hub, a, b), from its spoke hub-a, from its spoke hub-b, or from the hub.
+                const vector along_a = (a - n.hub).unit(), along_b = (b - n.hub).unit();
+                const vector normal = ((a - n.hub) % (b - n.hub)).unit();
+                point target;
+                std::string near;
+                if (k % 3 == 0) {
+                    target = n.hub + (x * n.size) * (along_a + along_b).unit();
+                    near = "the shared vertex " + show(n.hub);
+                } else {
+                    const bool first = k % 3 == 1;
+                    const vector spoke = first ? along_a : along_b;
+                    const vector into = (first ? normal % spoke : spoke % normal).unit();
+                    const point on = n.hub + random.uniform(0.2, 0.7) * ((first ? a : b) - n.hub);
+                    target = on + (x * n.size) * into;
+                    near = "the shared edge from " + show(n.hub) + " to " + show(first ? a : b);
+                }
+                vector d = random.direction();
+                if (std::fabs(d * normal) < 0.5) d = (d + (d * normal < 0 ? -1.0 : 1.0) * normal).unit();  // across, not along
+                const ray r = through(target + n.size * random.uniform(0.5, 20) * d, target);
+                bool hit = false;
+                std::string threw = n.problem;
+                if (threw.empty()) {
+                    try {
+                        hit = mesh_hit(n.triangles, r);
+                    } catch (const std::exception& e) {
+                        threw = std::string("intersect() threw: ") + e.what();
+                    } catch (...) {
+                        threw = "intersect() threw";
+                    }
+                }
+                t.check(hit, [&] {
+                    return show(r) + " crosses a fan of triangles " + num(x * n.size) + " from " + near +
+                           (threw.empty() ? " and hits none of them" : ": " + threw);
+                });
+            }
+        }
+        t.report_sweep_point(x);
+    }
 }
