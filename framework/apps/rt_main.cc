@@ -1,6 +1,6 @@
 // rt: render a scene file to an image, without a window.
 //
-//   rt SCENE -o OUT.png [--size WxH] [--spp N] [--sampler NAME] [--threads N]
+//   rt SCENE -o OUT.png [--size WxH] [--spp N] [--sampler NAME] [--threads N] [--seed N]
 //      [--heatmap HEAT.png] [--stats]
 //
 // The command line and the render; the pieces come from the caller (rt_main.hh).
@@ -34,7 +34,7 @@ std::string listing(const std::vector<std::string>& names) {
 
 /// rt --help: the sample patterns are those registered in this build.
 std::string usage(const vl::registry& pieces) {
-    return "usage: rt SCENE -o OUT [--size WxH] [--spp N] [--sampler NAME] [--threads N]\n"
+    return "usage: rt SCENE -o OUT [--size WxH] [--spp N] [--sampler NAME] [--threads N] [--seed N]\n"
            "          [--heatmap HEAT.png] [--stats]\n"
            "  SCENE            a .ray_trace file (docs/scene-format.md)\n"
            "  -o OUT           the image to write: .png, .ppm or .pgm (8-bit sRGB), .pfm (linear float)\n"
@@ -42,6 +42,8 @@ std::string usage(const vl::registry& pieces) {
            "  --spp N          samples per pixel (default: the scene's samples)\n"
            "  --sampler NAME   one of " + listing(pieces.sampler_names()) + " (default: the scene's sampler)\n"
            "  --threads N      worker threads (default: one per core)\n"
+           "  --seed N         another seed for the random samplers: other samples, same image in the limit\n"
+           "                   (default 0)\n"
            "  --heatmap FILE   also write the intersection heat map, with its colour scale\n"
            "  --stats          print rays, tests per ray, time and memory\n";
 }
@@ -65,6 +67,7 @@ struct options {
     std::optional<std::pair<int, int>> size;
     std::optional<int> spp;
     int threads = 0;
+    std::uint64_t seed = 0;
     bool stats = false;
 };
 
@@ -89,6 +92,8 @@ options parse(int argc, char** argv, const vl::registry& pieces) {
             o.spp = to_int(a, value(), 1, 4096);
         } else if (a == "--threads") {
             o.threads = to_int(a, value(), 1, 1024);
+        } else if (a == "--seed") {
+            o.seed = static_cast<std::uint64_t>(to_int(a, value(), 0, 1 << 30));
         } else if (a == "--stats") {
             o.stats = true;
         } else if (a == "--size") {
@@ -136,6 +141,7 @@ int vl::rt_main(int argc, char** argv, const registry& types) {
         vl::vfb image(s.width - 1, s.height - 1, linear ? "rgbf" : "rgb8");
         vl::render_options ro;
         ro.threads = opt.threads;
+        ro.seed = opt.seed;
         const vl::render_stats st = vl::render(s, types, image, ro);
         image.save(opt.output);
 

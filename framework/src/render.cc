@@ -14,10 +14,11 @@
 
 namespace vl {
 
-std::uint64_t pixel_seed(int x, int y) {
+std::uint64_t pixel_seed(int x, int y, std::uint64_t image_seed) {
     std::uint64_t z = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) ^
                       static_cast<std::uint32_t>(y);
-    z += 0x9e3779b97f4a7c15ull;
+    // Seed 0 leaves z as it is: the default image does not change.
+    z += 0x9e3779b97f4a7c15ull * (image_seed + 1);
     z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
     z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
     return z ^ (z >> 31);
@@ -92,7 +93,7 @@ render_stats render(const scene& s, const registry& types, vfb& out, const rende
                 for (int y = t.y0; y < t.y1; ++y) {
                     for (int x = t.x0; x < t.x1; ++x) {
                         const std::uint64_t before = counts().total_tests();
-                        pattern->offsets(offsets, pixel_seed(x, y));
+                        pattern->offsets(offsets, pixel_seed(x, y, options.seed));
                         color sum = BLACK;
                         for (const sample_offset& o : offsets)
                             sum += client->trace(cam->primary_ray(x + o.dx, y + o.dy), s.max_depth);

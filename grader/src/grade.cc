@@ -284,7 +284,9 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     i.message = o.message;
                     i.seconds = o.seconds;
                     i.image = o.image;
-                    i.difference_image = o.difference;
+                    i.flip_image = o.flip_map;
+                    i.highlight_image = o.highlight;
+                    if (!o.flip_map.empty()) i.flip_mean = o.flip_mean;
                 }
             }
         }

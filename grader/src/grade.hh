@@ -23,7 +23,10 @@ struct graded_item {
     std::string result = "not run";  ///< passed, failed, crashed, timed out, refused, not run
     std::string message;
     double seconds = 0;
-    std::filesystem::path image, reference_image, difference_image;  ///< scenes only
+    /// Scenes only: the submission's render, the reference's, the FLIP error map and the
+    /// highlighted difference.
+    std::filesystem::path image, reference_image, flip_image, highlight_image;
+    double flip_mean = -1;  ///< scenes only: the FLIP mean measured (-1: not measured)
     test_case_info test;  ///< tests and sweeps: as the trusted program lists it
     std::vector<sweep_point> sweep, reference_sweep;  ///< sweeps only: the submission's and the reference's points
     std::filesystem::path chart_svg, chart_png;       ///< sweeps only: the chart of both (when gnuplot drew it)

@@ -25,6 +25,7 @@
 #include "results_json.hh"
 #include "sandbox.hh"
 #include "terminal_summary.hh"
+#include "thresholds.hh"
 #include "vl/flip.hh"
 #include "vl/image_io.hh"
 #include "vl/ssim.hh"
@@ -320,8 +321,8 @@ std::vector<std::string> check_expectations(const fs::path& results, const fs::p
         }
     }
     // lose_sweeps: exactly these sweeps (by their tests' names) fail; every other passes.
-    // Without the key, every sweep must pass.
-    {
+    // A case that says where it loses (lose_only) and names no sweep must pass them all.
+    if (t["lose_only"].as_array() || t["lose_sweeps"].as_array()) {
         std::vector<std::string> losing;
         if (const toml::array* sweeps = t["lose_sweeps"].as_array())
             for (const toml::node& n : *sweeps) losing.push_back(n.value<std::string>().value_or(""));
@@ -413,6 +414,39 @@ vl::image read_for_imgdiff(const std::string& file, const char* role) {
     }
 }
 
+/// `calibrate-thresholds ASSIGNMENT [--calibration DIR] [--out DIR]`: the FLIP spread of
+/// each hidden scene over its legitimate renders and the thresholds it suggests
+/// (thresholds.hh); prints one line per render and one per scene, and writes them to
+/// OUT/thresholds.tsv.
+int calibrate_thresholds_command(const installation& in, arguments args) {
+    std::string calibration = take_option(args, "--calibration");
+    std::string out = take_option(args, "--out");
+    expect_count(args, 1);
+    const vl::grader::stage_info& stage = in.find_stage(args[0]);
+    if (calibration.empty()) calibration = (in.grader_build_dir / "calibration" / stage.name).string();
+    if (out.empty()) out = (in.grader_build_dir / "thresholds" / stage.name).string();
+    const auto spreads = vl::grader::measure_spread(in, stage, calibration, out);
+    std::ofstream tsv(fs::path(out) / "thresholds.tsv");
+    tsv << "scene\tvariation\tflip_mean\tfraction_over\n";
+    for (const auto& sp : spreads) {
+        for (const auto& v : sp.variations) {
+            if (!v.problem.empty()) {
+                std::printf("scene=%s variation=\"%s\" not measured: %s\n", sp.id.c_str(), v.name.c_str(), v.problem.c_str());
+                continue;
+            }
+            std::printf("scene=%s variation=\"%s\" flip_mean=%.5f fraction_over=%.5f\n", sp.id.c_str(), v.name.c_str(),
+                        v.flip_mean, v.fraction_over);
+            tsv << sp.id << '\t' << v.name << '\t' << v.flip_mean << '\t' << v.fraction_over << '\n';
+        }
+        std::printf("scene=%s spread: flip_mean<=%.5f fraction_over<=%.5f -> max_flip_mean = %g, max_fraction_over = %g"
+                    " (the rubric has metric=%s, max_flip_mean=%g, max_fraction_over=%g)\n",
+                    sp.id.c_str(), sp.max_flip_mean, sp.max_fraction_over, sp.suggested_flip_mean, sp.suggested_fraction,
+                    sp.metric.c_str(), sp.current_max_flip_mean, sp.current_max_fraction_over);
+    }
+    std::printf("written: %s\n", (fs::path(out) / "thresholds.tsv").string().c_str());
+    return 0;
+}
+
 /// `imgdiff REF TEST [--map OUT.png] [--ppd N]`: LDR-FLIP, SSIM and the largest 8-bit
 /// difference of TEST against REF, on one line (docs/image-metrics.md explains them).
 int imgdiff_command(arguments args) {
@@ -466,6 +500,11 @@ const std::vector<command>& commands() {
          "grade one calibration or attack case (grader/tests/submissions/NN-name/CASE, grader/tests/adversarial/...) "
          "and check it against its expected.toml; --no-policy tests the sandbox alone ([sandbox] in expected.toml)",
          calibrate_command},
+        {"calibrate-thresholds", "calibrate-thresholds ASSIGNMENT [--calibration DIR] [--out DIR]",
+         "the FLIP spread of each hidden scene over legitimate renders (two threads, other seeds, the correct "
+         "alternative cases' renders from DIR, by default the calibrate command's) and the max_flip_mean and "
+         "max_fraction_over that follow",
+         calibrate_thresholds_command},
         {"imgdiff", "imgdiff REF TEST [--map OUT.png] [--ppd N]",
          "how different TEST looks from REF: prints flip_mean (LDR-FLIP, 0 same), ssim (1 same), max_abs (8-bit "
          "levels) and FLIP's weighted percentiles on one line; --map writes the FLIP error map (magma colours)",

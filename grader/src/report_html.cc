@@ -93,8 +93,10 @@ tr + tr td { border-top: 1px solid #eee; } td.num { text-align: right; white-spa
 .badge { display: inline-block; min-width: 5.5em; text-align: center; border-radius: .3em; padding: 0 .4em; font-size: .85em; }
 .ok { background: #dff3e1; color: #1d5e27; } .bad { background: #fbe0dd; color: #8c1d12; } .skip { background: #eee; color: #555; }
 pre { background: #f6f6f6; padding: .6em; overflow-x: auto; font-size: .85em; white-space: pre-wrap; margin: .3em 0; }
-.figures { display: flex; gap: 1em; flex-wrap: wrap; margin: .4em 0 1em; }
+.figures { display: flex; gap: 1em; flex-wrap: wrap; margin: .4em 0 1em; cursor: zoom-in; }
+.figures.big { cursor: zoom-out; }
 figure { margin: 0; } figure img { image-rendering: pixelated; width: 216px; border: 1px solid #ccc; display: block; }
+.figures.big figure img { width: min(34em, 44vw); }
 figcaption { font-size: .85em; color: #555; text-align: center; }
 .noimage { width: 216px; height: 162px; display: flex; align-items: center; justify-content: center; background: #f2f2f2; color: #999; }
 .notes li { color: #7a4b00; }
@@ -148,9 +150,10 @@ std::string report_html(const graded_submission& g) {
             if (i.passed() && i.kit_passes) h << "<br><small>" << escape(i.message) << "</small>";
             if (i.what == graded_item::kind::scene && g.built) {
                 if (i.passed()) h << "<br><small>" << escape(i.message) << "</small>";
-                h << "<div class=\"figures\">" << image_tag(i.image, "this submission")
-                  << image_tag(i.reference_image, "reference") << image_tag(i.difference_image, "difference (4x)")
-                  << "</div>";
+                h << "<div class=\"figures\" title=\"click to enlarge\">" << image_tag(i.image, "this submission")
+                  << image_tag(i.reference_image, "reference")
+                  << image_tag(i.flip_image, "FLIP error (black: none, yellow: largest)")
+                  << image_tag(i.highlight_image, "differences in red") << "</div>";
             }
             if (i.what == graded_item::kind::sweep) {
                 if (i.passed()) h << "<br><small>" << escape(i.message) << "</small>";
@@ -170,7 +173,12 @@ std::string report_html(const graded_submission& g) {
     }
     h << "<h2>How this was graded</h2>\n<p class=\"meta\">Hidden tests ran one per process; only Catch2's "
          "report of each test counts, never what the program printed. Sandbox: "
-      << escape(g.sandbox) << ".</p>\n</body></html>\n";
+      << escape(g.sandbox)
+      << ".</p>\n"
+         // A click on a scene's images shows all four large, pixels as squares (a half-pixel
+         // shift shows); another click shows them small again.
+         "<script>for (const f of document.querySelectorAll('.figures')) "
+         "f.addEventListener('click', () => f.classList.toggle('big'));</script>\n</body></html>\n";
     return h.str();
 }
 

@@ -63,6 +63,8 @@ std::string results_json(const graded_submission& g) {
             t["extra_data"]["sweep"] = {{"test", i.test.name}, {"submission", curve(i.sweep)},
                                         {"reference", curve(i.reference_sweep)}};
         }
+        if (i.what == graded_item::kind::scene && i.flip_mean >= 0)
+            t["extra_data"]["scene"] = {{"id", i.tags.size() > 1 ? i.tags[1] : std::string()}, {"flip_mean", i.flip_mean}};
         tests.push_back(t);
     }
     json categories = json::array();

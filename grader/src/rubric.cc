@@ -221,6 +221,9 @@ rubric load_rubric(const fs::path& file, const fs::path& public_scenes, bool san
     if (const toml::array* scenes = t["scene"].as_array()) {
         for (const toml::node& n : *scenes) {
             const toml::table& s = *n.as_table();
+            only_keys(file, s, "[[scene]]",
+                      {"file", "public", "title", "category", "points", "student_pieces", "metric", "threshold_levels",
+                       "max_mean_difference", "max_flip_mean", "flip_pixel_level", "max_fraction_over", "visibility"});
             rubric_scene sc;
             sc.is_public = s["public"].value_or(false);
             sc.file = (sc.is_public ? public_scenes : file.parent_path() / "scenes") / s["file"].value_or(std::string());
@@ -239,11 +242,20 @@ rubric load_rubric(const fs::path& file, const fs::path& public_scenes, bool san
                 throw grader_error(place(file, n) + ": scene's category '" + sc.category + "' is not a [[category]]");
             sc.points = number(file, s, "points", 0);
             sc.metric = s["metric"].value_or(std::string("mean_abs"));
-            if (sc.metric != "mean_abs")
-                throw grader_error(place(file, n) + ": metric '" + sc.metric + "' is not available yet (mean_abs is)");
+            if (sc.metric != "mean_abs" && sc.metric != "flip")
+                throw grader_error(place(file, n) + ": metric '" + sc.metric + "' is not one of flip, mean_abs");
             sc.threshold_levels = static_cast<int>(number(file, s, "threshold_levels", 8));
             sc.max_mean_difference = number(file, s, "max_mean_difference", 0.5);
+            sc.max_flip_mean = number(file, s, "max_flip_mean", 0);
+            sc.flip_pixel_level = number(file, s, "flip_pixel_level", 0.5);
             sc.max_fraction_over = number(file, s, "max_fraction_over", 0.005);
+            if (sc.metric == "flip" && !(sc.max_flip_mean > 0 && sc.max_flip_mean < 1))
+                throw grader_error(place(file, n) + ": metric = \"flip\" needs max_flip_mean in (0, 1): set it from the "
+                                                    "spread that `grader/run calibrate-thresholds` measures");
+            if (!(sc.flip_pixel_level > 0 && sc.flip_pixel_level < 1))
+                throw grader_error(place(file, n) + ": flip_pixel_level must be in (0, 1)");
+            if (!(sc.max_fraction_over >= 0 && sc.max_fraction_over < 1))
+                throw grader_error(place(file, n) + ": max_fraction_over must be in [0, 1)");
             const auto cat = std::find_if(r.categories.begin(), r.categories.end(),
                                           [&](const rubric_category& c) { return c.name == sc.category; });
             sc.visibility = visibility(file, s, cat->visibility);

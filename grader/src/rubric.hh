@@ -36,10 +36,16 @@ struct rubric_scene {
     std::vector<std::string> student_pieces;
     std::string title, category, visibility;
     double points = 0;
-    std::string metric = "mean_abs";  ///< the comparison; "flip" and "ssim" come later
-    int threshold_levels = 8;
-    double max_mean_difference = 0.5;
-    double max_fraction_over = 0.005;
+    /// The comparison that decides: "flip" (LDR-FLIP, vl/flip.hh: the mean error and the
+    /// share of pixels whose error is over flip_pixel_level) or "mean_abs" (8-bit levels:
+    /// the mean difference and the share of pixels with a channel over threshold_levels).
+    /// Both are measured and shown either way.
+    std::string metric = "mean_abs";
+    int threshold_levels = 8;          ///< mean_abs: a pixel differs when a channel is more than this apart
+    double max_mean_difference = 0.5;  ///< mean_abs: levels, over all samples
+    double max_flip_mean = 0;          ///< flip: the largest mean FLIP error that passes (from calibration)
+    double flip_pixel_level = 0.5;     ///< flip: a pixel differs when its FLIP error is above this
+    double max_fraction_over = 0.005;  ///< both: of the pixels that differ
 };
 
 /// \brief A stability sweep: a hidden test tagged [sweep] moves one parameter to where

@@ -4,9 +4,11 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "external.hh"
 #include "image_compare.hh"
 #include "install.hh"
 #include "safe_files.hh"
+#include "vl/flip.hh"
 #include "vl/image_io.hh"
 
 namespace vl::grader {
@@ -18,7 +20,8 @@ namespace {
 vl::image as_rgb8(const vl::image& img) { return convert_channels(convert_samples(img, sample_type::u8), 3); }
 
 /// Black where the images agree, brighter where they differ (4x the largest channel
-/// difference, so a difference of 64 levels is white).
+/// difference, so a difference of 64 levels is white): the highlight when ImageMagick is
+/// missing.
 vl::image difference_image(const vl::image& a, const vl::image& b) {
     const vl::image x = as_rgb8(a), y = as_rgb8(b);
     vl::image d(x.width(), x.height(), 3, sample_type::u8);
@@ -76,28 +79,50 @@ scene_outcome render_and_compare(const fs::path& render_program, const rubric_sc
                     ":\n" + r.output_head(1500);
         return o;
     }
-    o.image = renders / (stem + ".png");
-    write_new_file(o.image, r.report);
+    // The renderer's bytes are decoded here and only the grader's own encoding of them is
+    // kept: nothing downstream (the report, ImageMagick) ever reads a submission's bytes.
+    vl::image mine;
     try {
-        const vl::image mine = read_image(o.image), theirs = read_image(reference);
-        const image_difference d = compare_images(mine, theirs, scene.threshold_levels);
-        o.rendered = true;
-        if (!d.same_size) {
-            o.message = "the image has the wrong size: " + d.summary;
-            return o;
-        }
-        o.difference = renders / (stem + ".difference.png");
-        write_image(o.difference, difference_image(mine, theirs));
-        o.matches = d.mean_abs <= scene.max_mean_difference && d.fraction_over <= scene.max_fraction_over;
-        std::ostringstream s;
-        s << d.summary << " (allowed: mean " << scene.max_mean_difference << ", "
-          << 100 * scene.max_fraction_over << "% of pixels)";
-        o.message = s.str();
+        const fs::path raw = renders / (stem + ".rendered.png");
+        write_new_file(raw, r.report);
+        mine = read_image(raw);
+        fs::remove(raw);
     } catch (const vl::image_error& e) {
-        o.rendered = false;
         o.message = std::string("the render wrote an unreadable image: ") + e.what();
-        o.image.clear();
+        return o;
     }
+    o.image = renders / (stem + ".png");
+    write_image(o.image, as_rgb8(mine));
+    o.rendered = true;
+    const vl::image theirs = read_image(reference);
+    const image_difference d = compare_images(mine, theirs, scene.threshold_levels);
+    if (!d.same_size) {
+        o.message = "the image has the wrong size: " + d.summary;
+        return o;
+    }
+    const vl::flip_result f = vl::flip(theirs, mine);
+    std::size_t over = 0;
+    for (const float e : f.error) over += e > scene.flip_pixel_level;
+    const double flip_over = f.error.empty() ? 0 : static_cast<double>(over) / static_cast<double>(f.error.size());
+    o.flip_mean = f.mean;
+    o.mean_abs = d.mean_abs;
+    o.flip_map = renders / (stem + ".flip.png");
+    write_image(o.flip_map, vl::flip_error_map(f));
+    o.highlight = renders / (stem + ".highlight.png");
+    if (!highlight_difference(reference, o.image, o.highlight).empty()) write_image(o.highlight, difference_image(mine, theirs));
+    std::ostringstream s;
+    s.precision(3);
+    if (scene.metric == "flip") {
+        o.matches = f.mean <= scene.max_flip_mean && flip_over <= scene.max_fraction_over;
+        s << "FLIP mean " << f.mean << " (allowed: " << scene.max_flip_mean << "), " << 100 * flip_over
+          << "% of pixels with FLIP error over " << scene.flip_pixel_level << " (allowed: " << 100 * scene.max_fraction_over
+          << "%); " << d.summary;
+    } else {
+        o.matches = d.mean_abs <= scene.max_mean_difference && d.fraction_over <= scene.max_fraction_over;
+        s << d.summary << " (allowed: mean " << scene.max_mean_difference << ", " << 100 * scene.max_fraction_over
+          << "% of pixels); FLIP mean " << f.mean;
+    }
+    o.message = s.str();
     return o;
 }
 

@@ -1,9 +1,8 @@
 #pragma once
 /// \file
 /// \brief Hidden scenes: rendered with the submission's pieces and compared with the
-/// reference render. The comparison is the per-pixel difference of vl::compare_images;
-/// perceptual metrics (FLIP, SSIM), intersection budgets and stability sweeps plug in
-/// through rubric_scene::metric.
+/// reference render. Both comparisons are measured, LDR-FLIP (vl/flip.hh) and the 8-bit
+/// difference of vl::compare_images; rubric_scene::metric says which decides.
 #include <filesystem>
 #include <string>
 
@@ -16,7 +15,10 @@ namespace vl::grader {
 struct scene_outcome {
     bool rendered = false, matches = false;
     std::string message;                      ///< why it failed, or the comparison's numbers
-    std::filesystem::path image, difference;  ///< the student's render and the difference image
+    std::filesystem::path image;              ///< the student's render (re-encoded by the grader)
+    std::filesystem::path flip_map;           ///< the FLIP error of each pixel, colour-mapped (magma)
+    std::filesystem::path highlight;          ///< ImageMagick's highlighted difference, else the grader's own
+    double flip_mean = 0, mean_abs = 0;       ///< the two measures, when rendered at the right size
     double seconds = 0;
 };
 

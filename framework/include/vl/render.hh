@@ -18,6 +18,9 @@ namespace vl {
 /// \brief How to render (not what: that is the scene).
 struct render_options {
     int threads = 0;       ///< worker threads; 0 means one per core
+    /// Mixed into every pixel's seed (pixel_seed): another seed draws other random samples
+    /// of the same image; 0 is the default image.
+    std::uint64_t seed = 0;
     int tile_size = 16;    ///< tiles are tile_size x tile_size pixels
     bool progress = true;  ///< a progress bar on stderr, only when it is a terminal and the render takes over a second
     const std::atomic<bool>* cancel = nullptr;  ///< when set and it becomes true, workers stop after their current tile
@@ -47,9 +50,10 @@ struct render_stats {
 /// Throws vl::usage_error when the scene names a piece `types` does not have.
 render_stats render(const scene& s, const registry& types, vfb& out, const render_options& options = {});
 
-/// The seed of pixel (x, y): a SplitMix64 hash of its coordinates (Steele, Lea and Flood
-/// 2014), so neighbouring pixels get unrelated random sequences.
-std::uint64_t pixel_seed(int x, int y);
+/// The seed of pixel (x, y): a SplitMix64 hash of its coordinates and of `image_seed`
+/// (render_options::seed; Steele, Lea and Flood 2014), so neighbouring pixels get
+/// unrelated random sequences.
+std::uint64_t pixel_seed(int x, int y, std::uint64_t image_seed = 0);
 
 /// The thesis's `render_to_vfb`: reads `file` and renders it into `out`, choosing the
 /// client by the file's extension (`.ray_trace`: ray trace with the scene's tracer).

@@ -166,11 +166,15 @@ inline mat4 transpose(const mat4& a) {
         for (int j = 0; j < 4; ++j) r(i, j) = a(j, i);
     return r;
 }
-/// The infinity norm: the largest sum of absolute values along a row.
+/// The infinity norm: the largest sum of absolute values along a row; NaN when any
+/// element is NaN (so an error measured with it never hides a NaN).
 inline ld norm(const mat4& m) {
     ld n = 0;
-    for (int i = 0; i < 4; ++i)
-        n = std::max(n, std::fabs(m(i, 0)) + std::fabs(m(i, 1)) + std::fabs(m(i, 2)) + std::fabs(m(i, 3)));
+    for (int i = 0; i < 4; ++i) {
+        const ld row = std::fabs(m(i, 0)) + std::fabs(m(i, 1)) + std::fabs(m(i, 2)) + std::fabs(m(i, 3));
+        if (!(row <= n)) n = row;  // also takes a NaN, which then stays
+        if (std::isnan(n)) return n;
+    }
     return n;
 }
 /// `m` applied to the point (w = 1) or the vector (w = 0) `a`: x, y, z and w.

@@ -513,10 +513,11 @@ TEST_CASE("sweep: sphere: hits on spheres 1 to 1e9 radii away", "[02][sweep]") {
 }
 
 TEST_CASE("sweep: sphere: grazing rays from 1e-15 to 0.1 radii inside and outside the silhouette", "[02][sweep]") {
-    // x = how far the ray passes inside (a hit) or outside (a miss) the silhouette, in
-    // radii. Near the silhouette the hit distance is ill-conditioned: rounding the ray's
-    // origin by one unit in the last place moves it by about r * scale * 1e-16 / (half
-    // chord), which the tolerance adds to the usual 1e-12 of the distances involved.
+    // x = how far the ray passes inside (it must hit) or outside (it must miss) the
+    // silhouette, in radii, for spheres about ten radii away. What is measured is the
+    // decision, hit or miss: a hit must be near the tangent point (within 1e-6 of the
+    // distances involved), not to twelve digits, since near the silhouette the distance
+    // itself is ill-conditioned (the far-sphere sweep measures the digits).
     sampler random(209);
     for (int e10 = -15; e10 <= -1; ++e10) {
         const double margin = std::pow(10.0, e10);
@@ -534,10 +535,29 @@ TEST_CASE("sweep: sphere: grazing rays from 1e-15 to 0.1 radii inside and outsid
                 for (const double offset : {1 - margin, 1 + margin}) {
                     const ray r(b.center + offset * b.radius * side - 10 * b.radius * d, d);
                     const sphere_roots roots = sphere_oracle(b.center, b.radius, r);
-                    const double half_chord = roots.meets ? static_cast<double>(roots.t1 - roots.t0) / 2 : 0;
-                    const double conditioning =
-                        half_chord > 0 ? 8e-16 * b.radius * static_cast<double>(roots.scale) / half_chord : 0;
-                    sweep_ray(t, *s, b, r, conditioning);
+                    const double want = expected_t(roots, s->zero_t());
+                    const double tol = 1e-6 * static_cast<double>(roots.scale);
+                    intersection i;
+                    std::string threw;
+                    try {
+                        i = s->intersect(r);
+                    } catch (const std::exception& e) {
+                        threw = std::string("intersect() threw: ") + e.what();
+                    } catch (...) {
+                        threw = "intersect() threw";
+                    }
+                    const std::string where = " (it passes " + num(margin) + " radii " +
+                                              (offset < 1 ? "inside" : "outside") + " the silhouette)";
+                    if (want > 0)
+                        t.check(threw.empty() && hit_near(i, s.get(), want, tol), [&] {
+                            return show(r) + " should hit " + describe(b) + " near t = " + num(want) + " ± " + num(tol) +
+                                   where + "; yours " + (threw.empty() ? "returned " + show(i, s.get()) : threw);
+                        });
+                    else
+                        t.check(threw.empty() && clean_miss(i), [&] {
+                            return show(r) + " should miss " + describe(b) + where + "; yours " +
+                                   (threw.empty() ? "returned " + show(i, s.get()) : threw);
+                        });
                 }
             }
         }

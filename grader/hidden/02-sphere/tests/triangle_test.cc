@@ -568,7 +568,7 @@ TEST_CASE("triangle: write() keeps every digit of the vertices and of each surfa
 
 TEST_CASE("sweep: triangle: rays aimed 1e-17 to 0.1 of a triangle's size from a shared edge or vertex", "[02][sweep]") {
     // Fans of triangles around a hub, slightly bumpy, at various places and sizes. Each ray
-    // crosses a fan at a point x * size from a shared edge (a spoke) or from the shared
+    // comes from the front and crosses a fan at a point x * size from a shared edge (a spoke) or from the shared
     // vertex (the hub), inside one of the triangles next to it; it must hit at least one
     // triangle of the fan. At x = 1e-17 the point is on the edge up to rounding: a test
     // that is exact there (the same edge function for both neighbours, ties counted as
@@ -631,8 +631,10 @@ TEST_CASE("sweep: triangle: rays aimed 1e-17 to 0.1 of a triangle's size from a 
                     target = on + (x * n.size) * into;
                     near = "the shared edge from " + show(n.hub) + " to " + show(first ? a : b);
                 }
+                // From the front (back faces are the hit tests' business), across the fan, not along it.
                 vector d = random.direction();
-                if (std::fabs(d * normal) < 0.5) d = (d + (d * normal < 0 ? -1.0 : 1.0) * normal).unit();  // across, not along
+                if (d * normal < 0) d = -d;
+                if (d * normal < 0.5) d = (d + normal).unit();
                 const ray r = through(target + n.size * random.uniform(0.5, 20) * d, target);
                 bool hit = false;
                 std::string threw = n.problem;
