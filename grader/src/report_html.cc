@@ -95,10 +95,10 @@ tr + tr td { border-top: 1px solid #eee; } td.num { text-align: right; white-spa
 pre { background: #f6f6f6; padding: .6em; overflow-x: auto; font-size: .85em; white-space: pre-wrap; margin: .3em 0; }
 .figures { display: flex; gap: 1em; flex-wrap: wrap; margin: .4em 0 1em; cursor: zoom-in; }
 .figures.big { cursor: zoom-out; }
-figure { margin: 0; } figure img { image-rendering: pixelated; width: 216px; border: 1px solid #ccc; display: block; }
+figure { margin: 0; } figure img { image-rendering: pixelated; width: 180px; border: 1px solid #ccc; display: block; }
 .figures.big figure img { width: min(34em, 44vw); }
 figcaption { font-size: .85em; color: #555; text-align: center; }
-.noimage { width: 216px; height: 162px; display: flex; align-items: center; justify-content: center; background: #f2f2f2; color: #999; }
+.noimage { width: 180px; height: 135px; display: flex; align-items: center; justify-content: center; background: #f2f2f2; color: #999; }
 .notes li { color: #7a4b00; }
 .chart svg { max-width: 100%; height: auto; display: block; margin: .4em 0; }
 )";

@@ -116,7 +116,7 @@ std::vector<scene_spread> measure_spread(const installation& in, const stage_inf
             sp.max_fraction_over = std::max(sp.max_fraction_over, v.fraction_over);
         }
         sp.suggested_flip_mean = round_up(std::max(0.01, 2 * sp.max_flip_mean));
-        sp.suggested_fraction = round_up(std::max(0.002, 2 * sp.max_fraction_over));
+        sp.suggested_fraction = round_up(std::max(0.005, 2 * sp.max_fraction_over));
         spreads.push_back(sp);
     }
     return spreads;

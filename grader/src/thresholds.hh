@@ -8,9 +8,11 @@
 /// seeds of the random samplers, and the renders of the stage's correct alternative
 /// calibration cases (grader/tests/submissions/NN-name/alt-* and correct-*: written from
 /// the contract alone, with other formulas and other rounding). The suggested
-/// max_flip_mean is twice the largest FLIP mean among them, and at least 0.01; the
-/// suggested max_fraction_over is twice the largest share of pixels over the scene's
-/// flip_pixel_level, and at least 0.002.
+/// max_flip_mean is twice the largest FLIP mean among them, and at least 0.01 (one pixel
+/// in 200 flipping from one flat colour to another costs about 0.004); the suggested
+/// max_fraction_over is twice the largest share of pixels over the scene's
+/// flip_pixel_level, and at least 0.005 (an edge may move by a pixel when a compiler
+/// contracts a multiply-add differently).
 #include <filesystem>
 #include <string>
 #include <vector>
