@@ -96,7 +96,7 @@ pre { background: #f6f6f6; padding: .6em; overflow-x: auto; font-size: .85em; wh
 .figures { display: flex; gap: 1em; flex-wrap: wrap; margin: .4em 0 1em; cursor: zoom-in; }
 .figures.big { cursor: zoom-out; }
 figure { margin: 0; } figure img { image-rendering: pixelated; width: 180px; border: 1px solid #ccc; display: block; }
-.figures.big figure img { width: min(34em, 44vw); }
+.figures.big figure img { width: min(25em, 40vw); }
 figcaption { font-size: .85em; color: #555; text-align: center; }
 .noimage { width: 180px; height: 135px; display: flex; align-items: center; justify-content: center; background: #f2f2f2; color: #999; }
 .notes li { color: #7a4b00; }
