@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <filesystem>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -459,4 +460,25 @@ TEST_CASE("FLIP: the error map is a magma-coloured image of the inputs' size", "
     CHECK(std::lround(255 * c[2]) == 191);
     // The map shows the error: the changed right-hand part is brighter than the untouched left.
     CHECK(s[3 * (10 * 37 + 30)] > s[3 * (10 * 37 + 2)]);
+}
+
+TEST_CASE("SSIM: gray images agree with scikit-image's structural_similarity to 1e-5", "[metrics]") {
+    // Independent values: scikit-image 0.19.3 (Debian 12's python3-skimage),
+    // structural_similarity(a, b, gaussian_weights=True, sigma=1.5,
+    // use_sample_covariance=False, data_range=1.0) on the 8-bit gray values / 255, which is
+    // the paper's MATLAB code (11 x 11 Gaussian window, K1 0.01, K2 0.03, 'valid' windows).
+    // The images (data/metrics): a 64 x 48 sine pattern and a copy 10 levels brighter, with
+    // Gaussian noise (sigma 12 levels) and box-blurred (5 x 5); a 50 x 30 pattern and a
+    // noisy copy (sigma 20).
+    const std::filesystem::path dir = VL_TEST_METRICS;
+    struct pair {
+        const char *reference, *test;
+        double ssim;
+    };
+    for (const pair& p : {pair{"ref.png", "shift.png", 0.996754}, pair{"ref.png", "noise.png", 0.646226},
+                          pair{"ref.png", "blur.png", 0.997824}, pair{"ns_ref.png", "ns_noise.png", 0.575116}}) {
+        const vl::image a = vl::read_image(dir / p.reference), b = vl::read_image(dir / p.test);
+        INFO(p.reference << " against " << p.test);
+        CHECK(vl::ssim(a, b).mean == Approx(p.ssim).margin(1e-5));
+    }
 }

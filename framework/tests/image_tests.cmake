@@ -5,6 +5,7 @@ target_compile_definitions(image_test PRIVATE VL_TEST_IMAGES="${CMAKE_CURRENT_SO
 
 # Perceptual image comparison: LDR-FLIP and SSIM (vl_metrics).
 vl_add_tests(image_metrics_test LABEL framework LIBS vl_metrics SOURCES image_metrics_test.cc)
+target_compile_definitions(image_metrics_test PRIVATE VL_TEST_METRICS="${CMAKE_CURRENT_SOURCE_DIR}/data/metrics")
 
 # Line charts drawn by gnuplot (vl_metrics).
 vl_add_tests(chart_test LABEL framework LIBS vl_metrics SOURCES chart_test.cc)
