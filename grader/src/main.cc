@@ -414,18 +414,23 @@ vl::image read_for_imgdiff(const std::string& file, const char* role) {
     }
 }
 
-/// `calibrate-thresholds ASSIGNMENT [--calibration DIR] [--out DIR]`: the FLIP spread of
+/// `calibrate-thresholds ASSIGNMENT [--calibration DIR] [--renderer PATH]... [--out DIR]`: the FLIP spread of
 /// each hidden scene over its legitimate renders and the thresholds it suggests
 /// (thresholds.hh); prints one line per render and one per scene, and writes them to
 /// OUT/thresholds.tsv.
 int calibrate_thresholds_command(const installation& in, arguments args) {
     std::string calibration = take_option(args, "--calibration");
     std::string out = take_option(args, "--out");
+    std::vector<fs::path> renderers;
+    for (std::string r = take_option(args, "--renderer"); !r.empty(); r = take_option(args, "--renderer")) {
+        if (!fs::is_regular_file(r)) throw usage_error{"--renderer " + r + ": no such program"};
+        renderers.push_back(fs::absolute(r));
+    }
     expect_count(args, 1);
     const vl::grader::stage_info& stage = in.find_stage(args[0]);
     if (calibration.empty()) calibration = (in.grader_build_dir / "calibration" / stage.name).string();
     if (out.empty()) out = (in.grader_build_dir / "thresholds" / stage.name).string();
-    const auto spreads = vl::grader::measure_spread(in, stage, calibration, out);
+    const auto spreads = vl::grader::measure_spread(in, stage, calibration, out, renderers);
     std::ofstream tsv(fs::path(out) / "thresholds.tsv");
     tsv << "scene\tvariation\tflip_mean\tfraction_over\n";
     for (const auto& sp : spreads) {
@@ -500,10 +505,10 @@ const std::vector<command>& commands() {
          "grade one calibration or attack case (grader/tests/submissions/NN-name/CASE, grader/tests/adversarial/...) "
          "and check it against its expected.toml; --no-policy tests the sandbox alone ([sandbox] in expected.toml)",
          calibrate_command},
-        {"calibrate-thresholds", "calibrate-thresholds ASSIGNMENT [--calibration DIR] [--out DIR]",
-         "the FLIP spread of each hidden scene over legitimate renders (two threads, other seeds, the correct "
-         "alternative cases' renders from DIR, by default the calibrate command's) and the max_flip_mean and "
-         "max_fraction_over that follow",
+        {"calibrate-thresholds", "calibrate-thresholds ASSIGNMENT [--calibration DIR] [--renderer PATH]... [--out DIR]",
+         "the FLIP spread of each hidden scene over legitimate renders (two threads, other seeds, other builds' "
+         "reference renderers, the correct alternative cases' renders from DIR, by default the calibrate "
+         "command's) and the max_flip_mean and max_fraction_over that follow",
          calibrate_thresholds_command},
         {"imgdiff", "imgdiff REF TEST [--map OUT.png] [--ppd N]",
          "how different TEST looks from REF: prints flip_mean (LDR-FLIP, 0 same), ssim (1 same), max_abs (8-bit "

@@ -69,7 +69,7 @@ threshold_variation compare(const std::string& name, const vl::image& reference,
 }  // namespace
 
 std::vector<scene_spread> measure_spread(const installation& in, const stage_info& stage, const fs::path& calibration,
-                                         const fs::path& out) {
+                                         const fs::path& out, const std::vector<fs::path>& other_renderers) {
     const rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.assignment_dir(stage) / "scenes", in.sanitized);
     fs::create_directories(out);
     const std::vector<std::string> cases = alternatives(in, stage);
@@ -84,14 +84,23 @@ std::vector<scene_spread> measure_spread(const installation& in, const stage_inf
         const fs::path reference_png = in.reference_renders / stage.name / (s.id + ".png");
         const vl::image reference = read_image(reference_png);
         // The reference itself, on two threads and with other seeds of its random samplers.
-        const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
-            {"threads 2", {"--threads", "2"}}, {"seed 1", {"--threads", "1", "--seed", "1"}},
-            {"seed 2", {"--threads", "1", "--seed", "2"}}};
-        for (const auto& [name, extra] : runs) {
-            std::string tag = name;
-            std::replace(tag.begin(), tag.end(), ' ', '-');
+        struct run {
+            std::string name;
+            fs::path renderer;
+            std::vector<std::string> extra;
+        };
+        std::vector<run> runs = {{"threads 2", in.reference_renderer, {"--threads", "2"}},
+                                 {"seed 1", in.reference_renderer, {"--threads", "1", "--seed", "1"}},
+                                 {"seed 2", in.reference_renderer, {"--threads", "1", "--seed", "2"}}};
+        for (std::size_t k = 0; k < other_renderers.size(); ++k)
+            runs.push_back({"renderer " + std::to_string(k + 1) + " (" + other_renderers[k].string() + ")",
+                            other_renderers[k],
+                            {"--threads", "1"}});
+        for (std::size_t k = 0; k < runs.size(); ++k) {
+            const auto& [name, renderer, extra] = runs[k];
+            const std::string tag = "variation-" + std::to_string(k + 1);
             const fs::path png = out / (s.id + "." + tag + ".png");
-            std::vector<std::string> argv = {in.reference_renderer.string(), s.file.string(), "-o", png.string()};
+            std::vector<std::string> argv = {renderer.string(), s.file.string(), "-o", png.string()};
             argv.insert(argv.end(), extra.begin(), extra.end());
             const std::string problem = run_tool(argv, out / (s.id + "." + tag + ".log"), 600);
             if (!problem.empty()) throw grader_error("the reference renderer failed on " + s.file.string() + ": " + problem);

@@ -4,8 +4,9 @@
 /// the reference render, measured with LDR-FLIP, and the threshold that follows.
 ///
 /// A scene's threshold must pass every correct render and fail a wrong one. The
-/// legitimate variations are the reference rendered with two threads and with other
-/// seeds of the random samplers, and the renders of the stage's correct alternative
+/// legitimate variations are the reference rendered with two threads, with other seeds
+/// of the random samplers and by the reference renderers of other builds (another
+/// optimisation level or compiler: --renderer), and the renders of the stage's correct alternative
 /// calibration cases (grader/tests/submissions/NN-name/alt-* and correct-*: written from
 /// the contract alone, with other formulas and other rounding). The suggested
 /// max_flip_mean is twice the largest FLIP mean among them, and at least 0.01 (one pixel
@@ -42,7 +43,10 @@ struct scene_spread {
 /// renders are read from `calibration` (the calibrate command's output folders, one per
 /// case: run the stage's calibration first). Throws grader_error when the reference
 /// renderer fails.
+/// `other_renderers` are reference renderers of other builds (another compiler, -O0),
+/// each one more variation.
 std::vector<scene_spread> measure_spread(const installation& in, const stage_info& stage,
-                                         const std::filesystem::path& calibration, const std::filesystem::path& out);
+                                         const std::filesystem::path& calibration, const std::filesystem::path& out,
+                                         const std::vector<std::filesystem::path>& other_renderers = {});
 
 }  // namespace vl::grader
