@@ -152,7 +152,7 @@ std::string report_html(const graded_submission& g) {
                 if (i.passed()) h << "<br><small>" << escape(i.message) << "</small>";
                 h << "<div class=\"figures\" title=\"click to enlarge\">" << image_tag(i.image, "this submission")
                   << image_tag(i.reference_image, "reference")
-                  << image_tag(i.flip_image, "FLIP error (black: none, yellow: largest)")
+                  << image_tag(i.flip_image, "FLIP error (dark: none)")
                   << image_tag(i.highlight_image, "differences in red") << "</div>";
             }
             if (i.what == graded_item::kind::sweep) {
