@@ -109,11 +109,25 @@ vl::grader::graded_submission grade_into(const installation& in, const std::stri
     return g;
 }
 
+/// Where a grade goes without --out: build/grader-out/NN-name-NAME-HASH, NAME the
+/// submission's file name and HASH (FNV-1a) of its absolute path, so two students'
+/// folders of the same name never share one, and the build folder (ignored by git) holds it.
+fs::path default_out(const installation& in, const std::string& assignment, const std::string& submission) {
+    const std::string where = fs::absolute(submission).lexically_normal().string();
+    std::uint32_t h = 2166136261u;
+    for (const unsigned char c : where) h = (h ^ c) * 16777619u;
+    char hex[9];
+    std::snprintf(hex, sizeof hex, "%08x", h);
+    std::string name = fs::path(submission).lexically_normal().filename().string();
+    if (name.empty() || name == "." || name == "..") name = "submission";
+    return in.build_dir / "grader-out" / (in.find_stage(assignment).name + "-" + name + "-" + hex);
+}
+
 int grade_command(const installation& in, arguments args) {
     std::string out = take_option(args, "--out");
     const auto options = take_grade_options(args);
     expect_count(args, 2);
-    if (out.empty()) out = "grader-out/" + in.find_stage(args[0]).name + "-" + fs::path(args[1]).filename().string();
+    if (out.empty()) out = default_out(in, args[0], args[1]).string();
     const auto g = grade_into(in, args[0], args[1], out, options);
     vl::grader::print_summary(std::cout, g, out, vl::grader::stdout_wants_colour());
     return 0;
