@@ -140,7 +140,9 @@ TEST_CASE("sweep: no acne on lit planes and spheres with zero_t 0 from 1 to 1e8 
                     // is no acne and is graded with reflection.)
                     for (const auto& [r, t] : seen)
                         if (len(to_r(r.origin()) - eye) > 0.5L && dot(to_r(r.direction()), outward(r.origin())) > 0) {
-                            fault = "the secondary ray from " + show(r.origin()) + " towards " + show(r.direction()) +
+                            const bool shadow_ray = len(unit(light - to_r(r.origin())) - to_r(r.direction())) < 0.05L;
+                            fault = std::string(shadow_ray ? "the shadow ray" : "the reflected ray") + " from " +
+                                    show(r.origin()) + " towards " + show(r.direction()) +
                                     " hit the surface it leaves at t = " + num(static_cast<double>(t)) +
                                     " (start it off the surface by an amount relative to the coordinates); your "
                                     "trace() returned " + lit.words() + " with the light and " + dark.words() +
@@ -190,9 +192,9 @@ TEST_CASE("sweep: total internal reflection decided right from 1e-12 to 0.1 radi
                         const real kk = 1 - eta * eta * (1 - cos_i * cos_i);
                         const bool transmits = kk > 0;
                         const std::string asked =
-                            b.about(r, 3) + ", " + num(delta) + " radians " + (side < 0 ? "below" : "above") +
-                            " the critical angle " + num(static_cast<double>(degrees(critical))) + " degrees (k = " +
-                            num(static_cast<double>(kk)) + ")";
+                            num(delta) + " radians " + (side < 0 ? "below" : "beyond") + " the critical angle " +
+                            num(static_cast<double>(degrees(critical))) + " degrees of glass of ior " + num(ior) +
+                            " (k = " + num(static_cast<double>(kk)) + "): " + b.about(r, 3);
                         traced seen;
                         tally unused("emitter");
                         const bool emitter_ok = emitter_shows(unused, b.w.s, b.at_near_side(), &color::g,
