@@ -247,7 +247,7 @@ rubric load_rubric(const fs::path& file, const fs::path& public_scenes, bool san
             sc.threshold_levels = static_cast<int>(number(file, s, "threshold_levels", 8));
             sc.max_mean_difference = number(file, s, "max_mean_difference", 0.5);
             sc.max_flip_mean = number(file, s, "max_flip_mean", 0);
-            sc.flip_pixel_level = number(file, s, "flip_pixel_level", 0.5);
+            sc.flip_pixel_level = number(file, s, "flip_pixel_level", 0.1);
             sc.max_fraction_over = number(file, s, "max_fraction_over", 0.005);
             if (sc.metric == "flip" && !(sc.max_flip_mean > 0 && sc.max_flip_mean < 1))
                 throw grader_error(place(file, n) + ": metric = \"flip\" needs max_flip_mean in (0, 1): set it from the "

@@ -44,7 +44,9 @@ struct rubric_scene {
     int threshold_levels = 8;          ///< mean_abs: a pixel differs when a channel is more than this apart
     double max_mean_difference = 0.5;  ///< mean_abs: levels, over all samples
     double max_flip_mean = 0;          ///< flip: the largest mean FLIP error that passes (from calibration)
-    double flip_pixel_level = 0.5;     ///< flip: a pixel differs when its FLIP error is above this
+    /// flip: a pixel differs when its FLIP error is above this. 0.1 is about 6 levels of
+    /// a mid gray; a difference of one level, as rounding makes, is 0.03.
+    double flip_pixel_level = 0.1;
     double max_fraction_over = 0.005;  ///< both: of the pixels that differ
 };
 

@@ -124,7 +124,7 @@ std::vector<scene_spread> measure_spread(const installation& in, const stage_inf
             sp.max_flip_mean = std::max(sp.max_flip_mean, v.flip_mean);
             sp.max_fraction_over = std::max(sp.max_fraction_over, v.fraction_over);
         }
-        sp.suggested_flip_mean = round_up(std::max(0.01, 2 * sp.max_flip_mean));
+        sp.suggested_flip_mean = round_up(std::max(0.04, 2 * sp.max_flip_mean));
         sp.suggested_fraction = round_up(std::max(0.005, 2 * sp.max_fraction_over));
         spreads.push_back(sp);
     }

@@ -9,11 +9,13 @@
 /// optimisation level or compiler: --renderer), and the renders of the stage's correct alternative
 /// calibration cases (grader/tests/submissions/NN-name/alt-* and correct-*: written from
 /// the contract alone, with other formulas and other rounding). The suggested
-/// max_flip_mean is twice the largest FLIP mean among them, and at least 0.01 (one pixel
-/// in 200 flipping from one flat colour to another costs about 0.004); the suggested
+/// max_flip_mean is twice the largest FLIP mean among them, and at least 0.04 (rounding
+/// alone, one level off at every pixel of a flat gray, costs 0.03); the suggested
 /// max_fraction_over is twice the largest share of pixels over the scene's
-/// flip_pixel_level, and at least 0.005 (an edge may move by a pixel when a compiler
-/// contracts a multiply-add differently).
+/// flip_pixel_level (0.1, about 6 levels of a mid gray), and at least 0.005 (an edge may
+/// move by a pixel when a compiler contracts a multiply-add differently). The mean
+/// catches a difference spread over the image, the share a local one (a highlight of the
+/// wrong colour, a shifted edge).
 #include <filesystem>
 #include <string>
 #include <vector>
