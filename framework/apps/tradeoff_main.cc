@@ -228,6 +228,8 @@ vl::chart chart_of(const std::string& title, const std::string& x_label, const s
     c.y_label = y_label;
     c.log_x = true;
     c.log_y = true;
+    // This run's series wears the colour of the earlier run's series of that name.
+    std::map<std::string, int> colour;
     auto add = [&](const std::vector<point_row>& from, const std::string& prefix, vl::chart_series::style look) {
         std::vector<std::string> order;
         std::map<std::string, vl::chart_series> by;
@@ -238,11 +240,16 @@ vl::chart chart_of(const std::string& title, const std::string& x_label, const s
             }
             by[r.series].points.push_back({r.*x, r.*y});
         }
-        for (const std::string& name : order) c.series.push_back(by[name]);
+        for (const std::string& name : order) {
+            if (const auto known = colour.find(name); known != colour.end()) by[name].colour_of = known->second;
+            else colour[name] = static_cast<int>(c.series.size());
+            c.series.push_back(by[name]);
+        }
     };
     if (!against.empty()) add(against, against_name + ": ", vl::chart_series::style::line);
     add(rows, against.empty() ? "" : "this run: ", against.empty() ? vl::chart_series::style::line_and_marks
                                                                    : vl::chart_series::style::marks);
+    if (c.series.size() > 4) c.height = 520;  // the legend goes under the plot
     return c;
 }
 
