@@ -130,6 +130,13 @@ TEST_CASE("tradeoff names the file or the option that is wrong", "[tradeoff]") {
     CHECK(against.status == 1);
     CHECK(against.output.find("empty/points.tsv") != std::string::npos);
 
+    // A structure that cannot be built is left out with the reason; with none left, exit 1.
+    const run_result none = run_tradeoff("--structures --composites LIST --leaf LIST --max-n 16 --out " +
+                                         (dir.path() / "s").string());
+    CHECK(none.status == 1);
+    CHECK(none.output.find("left out LIST of 16 LIST") != std::string::npos);
+    CHECK(none.output.find("nothing could be measured") != std::string::npos);
+
     const run_result both = run_tradeoff("--structures " + scene.string());
     CHECK(both.status == 2);
     CHECK(both.output.find("give no scene file") != std::string::npos);
