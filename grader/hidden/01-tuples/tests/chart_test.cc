@@ -32,6 +32,7 @@ using rgb = std::array<double, 3>;
 
 /// The picture at image position (x, y) in pixel units, (0, 0) at the lower left; linear RGB.
 rgb picture(double x, double y) {
+    if (!std::isfinite(x) || !std::isfinite(y)) return {0, 0, 0};  // an offset that is no number
     auto inside = [&](double cx, double cy, double r) { return (x - cx) * (x - cx) + (y - cy) * (y - cy) < r * r; };
     if (inside(18, 30, 11)) return {0.9, 0.25, 0.1};
     if (inside(44, 16, 7.5)) return {0.15, 0.6, 0.95};
