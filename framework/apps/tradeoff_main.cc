@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -296,7 +297,13 @@ std::vector<point_row> sampler_sweep(const options& o, const vl::registry& piece
     std::printf("converged render: %s at %d samples per pixel, %d x %d\n", reference.c_str(), o.reference_spp, s.width,
                 s.height);
     std::fflush(stdout);
-    const rendered converged = render_with(s, pieces, reference, o.reference_spp, o.threads);
+    rendered converged;
+    try {
+        converged = render_with(s, pieces, reference, o.reference_spp, o.threads);
+    } catch (const std::exception& e) {
+        throw run_error{"the converged render (sampler '" + reference + "', --reference-sampler) failed: " + e.what() +
+                        " (write that pattern first, or choose another with --reference-sampler)"};
+    }
     vl::write_image(out / "converged.png", converged.picture);
 
     std::vector<point_row> rows;
