@@ -68,7 +68,10 @@ std::string plot_commands(const chart& c, const fs::path& tsv) {
     g << "set xlabel " << quoted(c.x_label) << " noenhanced\n";
     g << "set ylabel " << quoted(c.y_label) << " noenhanced\n";
     g << "set datafile missing 'nan'\n";
-    g << "set key outside right top noenhanced\n";
+    // Many series (a submission's marks beside the reference's lines): the legend goes
+    // under the plot, in columns, so the plot keeps its width.
+    if (c.series.size() > 4) g << "set key outside bottom center horizontal maxcols 2 noenhanced\n";
+    else g << "set key outside right top noenhanced\n";
     g << "set grid\n";
     if (c.log_x) g << "set logscale x\nset format x '10^{%L}'\n";
     if (c.log_y) g << "set logscale y\nset format y '10^{%L}'\n";
@@ -85,11 +88,12 @@ std::string plot_commands(const chart& c, const fs::path& tsv) {
     std::string plots;
     for (std::size_t k = 0; k < c.series.size(); ++k) {
         const chart_series& s = c.series[k];
-        const char* colour = palette[k % palette.size()];
+        const std::size_t entry = s.colour_of >= 0 ? static_cast<std::size_t>(s.colour_of) : k;
+        const char* colour = palette[entry % palette.size()];
         std::string with;
         switch (s.look) {
             case chart_series::style::line: with = "lines linewidth 2"; break;
-            case chart_series::style::marks: with = "points pointtype 7 pointsize 1.2"; break;
+            case chart_series::style::marks: with = "points pointtype 6 pointsize 1.6 linewidth 2"; break;
             case chart_series::style::line_and_marks: with = "linespoints linewidth 2 pointtype 7 pointsize 0.8"; break;
         }
         plots += (plots.empty() ? "plot " : ", \\\n     ") + quoted(tsv.filename().string()) + " index " +

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -505,6 +506,25 @@ int imgdiff_command(arguments args) {
     return 0;
 }
 
+/// `tradeoff ...`: runs the tradeoff program this build made (framework/apps/tradeoff,
+/// beside the grader's build folder), which knows its own options (`tradeoff --help`).
+int tradeoff_command(arguments args) {
+    char self[4096];
+    const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) throw grader_error("cannot find the grader's own program (/proc/self/exe) to find tradeoff beside it");
+    self[n] = '\0';
+    const fs::path program = fs::path(self).parent_path().parent_path() / "framework" / "apps" / "tradeoff";
+    if (access(program.c_str(), X_OK) != 0)
+        throw grader_error(program.string() + " is missing: build it with tools/setup (or cmake --build build/default "
+                           "--target tradeoff)");
+    std::vector<char*> argv{const_cast<char*>(program.c_str())};
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    std::fflush(stdout);
+    execv(program.c_str(), argv.data());
+    throw grader_error("cannot run " + program.string() + ": " + std::strerror(errno));
+}
+
 const std::vector<command>& commands() {
     static const std::vector<command> table = {
         {"demo", "demo", "grade the bundled sample submissions and print where their reports are", demo_command},
@@ -528,6 +548,11 @@ const std::vector<command>& commands() {
          "how different TEST looks from REF: prints flip_mean (LDR-FLIP, 0 same), ssim (1 same), max_abs (8-bit "
          "levels) and FLIP's weighted percentiles on one line; --map writes the FLIP error map (magma colours)",
          nullptr, imgdiff_command},
+        {"tradeoff", "tradeoff SCENE [options] | --structures [options]",
+         "speed against accuracy as charts (TSV, gnuplot script, SVG, PNG in --out DIR), one line per point: SCENE's "
+         "LDR-FLIP against a converged render at 1 to 64 samples per pixel, per sample pattern, against time, rays "
+         "and tests; --structures: composites' tests per ray against N and build time (tradeoff --help)",
+         nullptr, tradeoff_command},
     };
     return table;
 }

@@ -162,6 +162,8 @@ vl::chart measured_chart(const rubric_chart& r, const std::vector<chart_point>& 
     c.y_label = r.y_label;
     c.log_x = r.log_x;
     c.log_y = r.log_y;
+    // A submission's series wears the colour of the reference's series of that name.
+    std::map<std::string, int> colour;
     auto add = [&](const std::vector<chart_point>& points, const std::string& prefix, vl::chart_series::style look) {
         std::vector<std::string> order;
         std::map<std::string, vl::chart_series> by;
@@ -172,10 +174,15 @@ vl::chart measured_chart(const rubric_chart& r, const std::vector<chart_point>& 
             }
             by[p.series].points.push_back({p.x, p.y});
         }
-        for (const std::string& name : order) c.series.push_back(by[name]);
+        for (const std::string& name : order) {
+            if (const auto known = colour.find(name); known != colour.end()) by[name].colour_of = known->second;
+            else colour[name] = static_cast<int>(c.series.size());
+            c.series.push_back(by[name]);
+        }
     };
     add(reference, "reference: ", vl::chart_series::style::line_and_marks);
     if (!whose.empty()) add(mine, whose + ": ", vl::chart_series::style::marks);
+    if (c.series.size() > 4) c.height = 520;  // the legend goes under the plot
     return c;
 }
 

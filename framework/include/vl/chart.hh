@@ -28,6 +28,9 @@ struct chart_series {
         line_and_marks  ///< both
     };
     style look = style::line_and_marks;  ///< how the curve is drawn
+    /// The colour: the palette entry of the series at this position in chart::series, so
+    /// that marks over a line wear the line's colour; -1 (the default): its own position's.
+    int colour_of = -1;
 };
 
 /// \brief A whole chart.
@@ -38,7 +41,7 @@ struct chart {
     bool log_x = false;   ///< x on a logarithmic scale (points with x <= 0 are left out)
     bool log_y = false;   ///< y on a logarithmic scale (points with y <= 0 are left out)
     std::optional<std::pair<double, double>> y_range;  ///< fixed y limits (a rate: 0 to 1), else gnuplot's
-    std::vector<chart_series> series;  ///< the curves, in the legend's order
+    std::vector<chart_series> series;  ///< the curves, in the legend's order (right of the plot; under it, in two columns, for more than 4)
     /// A range of x to shade (a sweep's "a correct method is stable here"), with its label.
     std::optional<std::pair<double, double>> band;
     std::string band_label;  ///< the band's legend text
