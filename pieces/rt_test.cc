@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../framework/tests/support/run_program.hh"
 #include "../framework/tests/support/temp_dir.hh"
 #include "all_pieces.hh"
 #include "image_compare.hh"
@@ -17,21 +18,9 @@ using namespace vl;
 
 namespace {
 
-struct run_result {
-    int status;
-    std::string output;  // stdout and stderr
-};
+using vl::test::run_result;
 
-run_result run_rt(const std::string& args) {
-    const std::string command = std::string(VL_RT_PATH) + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe);
-    std::string out;
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-    const int status = pclose(pipe);
-    return {WEXITSTATUS(status), out};
-}
+run_result run_rt(const std::string& args) { return vl::test::run_program(VL_RT_PATH, args); }
 
 std::string file_bytes(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);

@@ -11,26 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "../framework/tests/support/run_program.hh"
 #include "../framework/tests/support/temp_dir.hh"
 #include "vl/chart.hh"
 
 namespace {
 
-struct run_result {
-    int status;
-    std::string output;  // stdout and stderr
-};
+using vl::test::run_result;
 
-run_result run_tradeoff(const std::string& args) {
-    const std::string command = std::string(VL_TRADEOFF_PATH) + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe);
-    std::string out;
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-    const int status = pclose(pipe);
-    return {WEXITSTATUS(status), out};
-}
+run_result run_tradeoff(const std::string& args) { return vl::test::run_program(VL_TRADEOFF_PATH, args); }
 
 /// The lines of `text` that start with `prefix`, each as its key=value fields.
 std::vector<std::map<std::string, std::string>> point_lines(const std::string& text, const std::string& prefix) {

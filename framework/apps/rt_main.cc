@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "command_line.hh"
 #include "vl/error.hh"
 #include "vl/heat_map.hh"
 #include "vl/image_io.hh"
@@ -25,12 +26,9 @@
 
 namespace {
 
-/// `a, b, c`, or `none` for no names.
-std::string listing(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out.empty() ? "none" : out;
-}
+using vl::apps::command_line_error;
+using vl::apps::listing;
+using vl::apps::to_int;
 
 /// rt --help: the sample patterns are those registered in this build.
 std::string usage(const vl::registry& pieces) {
@@ -46,20 +44,6 @@ std::string usage(const vl::registry& pieces) {
            "                   (default 0)\n"
            "  --heatmap FILE   also write the intersection heat map, with its colour scale\n"
            "  --stats          print rays, tests per ray, time and memory\n";
-}
-
-/// A command-line mistake: the message is printed as `rt: MESSAGE` with a hint.
-struct command_line_error {
-    std::string message;
-};
-
-int to_int(std::string_view flag, std::string_view text, int lo, int hi) {
-    int v = 0;
-    const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (err != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
-        throw command_line_error{std::string(flag) + " wants a whole number from " + std::to_string(lo) + " to " +
-                          std::to_string(hi) + ", not '" + std::string(text) + "'"};
-    return v;
 }
 
 struct options {
@@ -97,11 +81,7 @@ options parse(int argc, char** argv, const vl::registry& pieces) {
         } else if (a == "--stats") {
             o.stats = true;
         } else if (a == "--size") {
-            const std::string_view v = value();
-            const auto x = v.find('x');
-            if (x == std::string_view::npos) throw command_line_error{"--size wants WIDTHxHEIGHT, like 640x480, not '" + std::string(v) + "'"};
-            o.size = {{to_int("--size width", v.substr(0, x), 1, vl::max_image_side),
-                       to_int("--size height", v.substr(x + 1), 1, vl::max_image_side)}};
+            o.size = vl::apps::to_size(value(), "640x480");
         } else if (!a.empty() && a[0] == '-') {
             throw command_line_error{"unknown option '" + std::string(a) + "'"};
         } else if (o.scene.empty()) {

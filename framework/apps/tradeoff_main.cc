@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "vl/chart.hh"
+#include "command_line.hh"
 #include "vl/error.hh"
 #include "vl/flip.hh"
 #include "vl/render.hh"
@@ -33,23 +34,16 @@
 
 namespace {
 
-namespace fs = std::filesystem;
+using vl::apps::command_line_error;
+using vl::apps::listing;
+using vl::apps::to_int;
 
-/// A command-line mistake: printed as `tradeoff: MESSAGE` with a hint, exit status 2.
-struct command_line_error {
-    std::string message;
-};
+namespace fs = std::filesystem;
 
 /// Another failure (a file, a scene, a piece): printed as `tradeoff: MESSAGE`, exit status 1.
 struct run_error {
     std::string message;
 };
-
-std::string listing(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out.empty() ? "none" : out;
-}
 
 std::string usage(const vl::registry& pieces) {
     return "usage: tradeoff SCENE [--out DIR] [--size WxH] [--spp LIST] [--samplers LIST]\n"
@@ -78,15 +72,6 @@ std::string usage(const vl::registry& pieces) {
            "\n"
            "Writes DIR/points.tsv and each chart as DIR/NAME.tsv, .gp and (with gnuplot) .svg and .png;\n"
            "prints one line per point.\n";
-}
-
-int to_int(std::string_view flag, std::string_view text, int lo, int hi) {
-    int v = 0;
-    const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (err != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
-        throw command_line_error{std::string(flag) + " wants a whole number from " + std::to_string(lo) + " to " +
-                                 std::to_string(hi) + ", not '" + std::string(text) + "'"};
-    return v;
 }
 
 std::vector<std::string> split(std::string_view text) {
@@ -131,12 +116,7 @@ options parse(int argc, char** argv, const vl::registry& pieces) {
         } else if (a == "--against") {
             o.against = value();
         } else if (a == "--size") {
-            const std::string_view v = value();
-            const auto x = v.find('x');
-            if (x == std::string_view::npos)
-                throw command_line_error{"--size wants WIDTHxHEIGHT, like 64x48, not '" + std::string(v) + "'"};
-            o.size = {{to_int("--size width", v.substr(0, x), 1, vl::max_image_side),
-                       to_int("--size height", v.substr(x + 1), 1, vl::max_image_side)}};
+            o.size = vl::apps::to_size(value(), "64x48");
         } else if (a == "--spp") {
             o.spp.clear();
             for (const std::string& s : split(value())) o.spp.push_back(to_int("--spp", s, 1, 4096));
