@@ -70,7 +70,9 @@ int read_statements(scene_reader& in, scene& s, const registry& types) {
             if (cam.eye == cam.look_at)
                 in.fail(open.where, "camera eye and look_at are the same point: the camera looks nowhere");
             if ((cam.look_at - cam.eye) % cam.up == vector(0, 0, 0, 0))
-                in.fail(open.where, "camera up is parallel to the view direction (or zero): choose an up that is not");
+                in.fail(open.where, "camera up is parallel to the view direction (or zero), so the image has no sideways "
+                        "direction: give an up that is not parallel to look_at - eye, such as 0 1 0 unless the "
+                        "camera looks straight up or down");
         } else if (key.text == "size") {
             s.width = in.read_int("image width", 1, max_image_side);
             s.height = in.read_int("image height", 1, max_image_side);

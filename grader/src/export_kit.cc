@@ -14,13 +14,15 @@ namespace fs = std::filesystem;
 namespace {
 
 /// What the kit takes from the top of the tree. Everything else (reference/, .ci/, build
-/// trees, version control) stays behind; of grader/ only its CMakeLists.txt goes, which
-/// builds nothing without grader/hidden/. pieces/ is what the build makes from the list of
-/// stages: the aggregate's template and the programs' main()s.
-const std::vector<std::string> kit_parts = {"CMakeLists.txt", "CMakePresets.json", "README.md", ".gitignore",
-                                            ".clang-format", ".clang-tidy", "framework", "pieces", "assignments",
-                                            "docs", "scenes", "tools", "bench", "cmake/stages.cmake",
+/// trees, version control, the instructor's tools) stays behind; of grader/ only its
+/// CMakeLists.txt goes, which builds nothing without grader/hidden/. pieces/ is what the
+/// build makes from the list of stages: the aggregate's template and the programs' main()s.
+/// The kit's README.md is kit_readme, the student's page, not the instructor's.
+const std::vector<std::string> kit_parts = {"CMakeLists.txt", "CMakePresets.json", ".gitignore", "framework", "pieces",
+                                            "assignments", "docs", "scenes", "tools/setup", "bench",
+                                            "cmake/stages.cmake", "cmake/check_test_names.cmake",
                                             "grader/CMakeLists.txt"};
+const char* const kit_readme = "kit/README.md";
 
 std::string read_all(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -91,6 +93,9 @@ std::vector<std::string> find_leaks(const fs::path& source_dir, const fs::path& 
 }
 
 void export_kit(const installation& in, const fs::path& dir) {
+    if (!fs::exists(in.source_dir / kit_readme))
+        throw grader_error((in.source_dir / kit_readme).string() + " is missing: it is the kit's README.md (the "
+                           "student's first page); restore it from version control");
     if (fs::exists(dir) && !fs::is_empty(dir))
         throw grader_error(dir.string() + " exists and is not empty: name a new folder for the kit");
     fs::create_directories(dir);
@@ -100,10 +105,12 @@ void export_kit(const installation& in, const fs::path& dir) {
         fs::create_directories((dir / part).parent_path());
         fs::copy(from, dir / part, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
     }
+    fs::copy_file(in.source_dir / kit_readme, dir / "README.md");
     // A student's grader/ holds only the CMakeLists.txt that builds nothing without hidden/.
     std::ofstream(dir / "grader" / "README.md")
         << "# grader\n\nYour instructor grades your stages with hidden tests and scenes that are not part of this "
-           "kit.\nRun the public tests (`ctest --preset default`) and render the public scenes to check your work.\n";
+           "kit.\nRun the public tests (`ctest --preset student`) and render the public scenes to check your "
+           "work;\nthe kit's README.md says how.\n";
 
     const std::vector<std::string> leaks = find_leaks(in.source_dir, dir);
     if (!leaks.empty()) {

@@ -408,7 +408,7 @@ int export_kit_command(const installation& in, const arguments& args) {
     vl::grader::export_kit(in, dir);
     std::cout << "student kit: " << dir.string() << "\n             " << dir.string()
               << ".tar.gz\nchecked: no line of reference/ and no hidden test name is in it\n"
-                 "a student builds it with: cmake --preset default -DVL_PIECES=student\n";
+                 "a student builds it with: tools/setup --preset student (its README.md says more)\n";
     return 0;
 }
 

@@ -1,6 +1,5 @@
 // Renders each public scene of stage 01 with this build's pieces and compares it with the
-// reference image stored beside it (made by tools/update-reference-images from the
-// reference build). You need not read this file to do the assignment: when one of these
+// reference image stored beside it (the instructor's reference pieces rendered it). You need not read this file to do the assignment: when one of these
 // fails, render the scene with rt and look at it next to the .png.
 #include <catch2/catch.hpp>
 
@@ -25,8 +24,8 @@ void check_scene(const std::string& name) {
     INFO("scene " << scene.string() << " against " << reference.string());
     const vl::image_difference d = vl::compare_render(scene, reference, vl::all_pieces());
     INFO(d.summary);
-    INFO("render it with rt and compare; if a reference piece or the scene changed on purpose, run "
-         "tools/update-reference-images");
+    INFO("to see the difference, render the scene with rt (the handout's section \"Render and look\") and look at "
+         "your image beside " << reference.filename().string() << ", e.g. in the vfb viewer");
     CHECK(renders_match(d));
 }
 
