@@ -310,23 +310,25 @@ proc ::demo::describe {info} {
     return $text
 }
 
-# The window position of virtual pixel (x, y)'s centre in widget v.
-proc ::demo::screen_of {v x y} {
-    set s [$v pixel_size]
-    set sx [expr {($x - [$v set_min_x]) * $s + $s / 2}]
-    set sy [expr {[winfo height $v] - 1 - (($y - [$v set_min_y]) * $s + $s / 2)}]
-    return [list $sx $sy]
-}
-
-# Zooms v to `size` screen pixels per virtual pixel with virtual pixel (x, y) in the middle.
+# Zooms v to `size` screen pixels per virtual pixel and pans so that the centre of virtual
+# pixel (x, y) is in the middle of the window (demo::centre); returns that window point.
 proc ::demo::zoom_to {v size x y} {
     $v pixel_size $size
     update idletasks
-    set across [expr {[winfo width $v] / $size}]
-    set up [expr {[winfo height $v] / $size}]
-    $v set_min_x [expr {max(-[$v cget -maxx], $x - $across / 2)}]
-    $v set_min_y [expr {max(-[$v cget -maxy], $y - $up / 2)}]
+    set w [winfo width $v]
+    set h [winfo height $v]
+    $v set_min_x [expr {max(-[$v cget -maxx], $x - $w / $size / 2)}]
+    $v set_min_y [expr {max(-[$v cget -maxy], $y - $h / $size / 2)}]
+    # Now pixel (x, y)'s centre is at a whole number of pixels from the lower left; pan it
+    # to the middle (pan moves the picture right and down by screen pixels).
+    set sx [expr {($x - [$v set_min_x]) * $size + $size / 2}]
+    set sy [expr {$h - 1 - (($y - [$v set_min_y]) * $size + $size / 2)}]
+    $v pan [expr {$w / 2 - $sx}] [expr {$h / 2 - $sy}]
+    return [demo::centre $v]
 }
+
+# The window point in the middle of v.
+proc ::demo::centre {v} { list [expr {[winfo width $v] / 2}] [expr {[winfo height $v] / 2}] }
 
 # Mean and largest tests per pixel of v's last render (every `stride`-th pixel each way).
 proc ::demo::test_counts {v {stride 1}} {
