@@ -26,7 +26,7 @@ MD
 out=$("$runner" --dir "$dir" "$dir/two.md"); status=$?
 [ "$status" = 1 ] || fail "a failing snippet must make the runner exit 1, not $status; output: $out"
 echo "$out" | grep -qF "$dir/two.md:3: ok" || fail "expected '$dir/two.md:3: ok' in: $out"
-echo "$out" | grep -qF "$dir/two.md:12: failed (exit 7)" || fail "expected '$dir/two.md:12: failed (exit 7)' in: $out"
+echo "$out" | grep -qF "$dir/two.md:11: failed (exit 7)" || fail "expected '$dir/two.md:11: failed (exit 7)' in: $out"
 echo "$out" | grep -qF "about to fail" || fail "expected the failing snippet's output in: $out"
 [ -f "$dir/passed.txt" ] || fail "the snippet did not run in --dir $dir"
 
