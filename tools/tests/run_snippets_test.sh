@@ -38,6 +38,12 @@ printf '# One\n<!-- runnable -->\n```sh\ntrue\n```\n' > "$dir/one.md"
 out=$("$runner" --dir "$dir" "$dir/one.md"); status=$?
 [ "$status" = 0 ] || fail "a passing file must exit 0, not $status; output: $out"
 
+printf '# Tagged\n<!-- runnable: solved -->\n```sh\necho solved > solved.txt\n```\n' > "$dir/tagged.md"
+out=$("$runner" --dir "$dir" "$dir/tagged.md"); status=$?
+[ "$status" = 0 ] && [ ! -f "$dir/solved.txt" ] || fail "a snippet marked runnable: solved must not run without --tag solved"
+out=$("$runner" --dir "$dir" --tag solved "$dir/tagged.md"); status=$?
+[ "$status" = 0 ] && [ -f "$dir/solved.txt" ] || fail "--tag solved must run the snippet marked runnable: solved; output: $out"
+
 printf 'text\n<!-- runnable -->\n```tcl\nputs x\n```\n' > "$dir/bad.md"
 out=$("$runner" "$dir/bad.md" 2>&1); status=$?
 [ "$status" = 2 ] || fail "a runnable mark on a tcl fence must exit 2, not $status"
