@@ -11,16 +11,22 @@ namespace eval ::vfb {
     variable drag
 }
 
-# Zooms widget w one step in (direction 1) or out (-1), keeping the pixel under (x, y).
+# Zooms widget w one step in (direction 1) or out (-1), keeping the pixel under (x, y);
+# returns the new pixel size. Afterwards it sends w the virtual event <<Zoomed>>, so a
+# zoom label bound to it shows the new size (a plain <Button-4> binding on w runs before
+# this class binding and would see the old one).
 proc ::vfb::zoom_step {w direction x y} {
     variable zoom_steps
     set size [$w pixel_size]
+    set new $size
     if {$direction > 0} {
-        foreach s $zoom_steps { if {$s > $size} { return [$w zoom $s $x $y] } }
+        foreach s $zoom_steps { if {$s > $size} { set new $s; break } }
     } else {
-        foreach s [lreverse $zoom_steps] { if {$s < $size} { return [$w zoom $s $x $y] } }
+        foreach s [lreverse $zoom_steps] { if {$s < $size} { set new $s; break } }
     }
-    return $size
+    if {$new != $size} { set new [$w zoom $new $x $y] }
+    event generate $w <<Zoomed>>
+    return $new
 }
 
 proc ::vfb::press {w x y} {

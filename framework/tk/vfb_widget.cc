@@ -44,6 +44,7 @@ struct widget_options {
     XColor* grid_color = nullptr;
     int view = 0;     // index into view_names
     int drawing = 0;  // index into drawing_names
+    int heat_scale = 0;  // index into heat_scale_names
     Tcl_Obj* progress_command = nullptr;
     Tcl_Obj* inspect_command = nullptr;
     Tk_Cursor cursor = nullptr;
@@ -51,11 +52,13 @@ struct widget_options {
 
 const char* const view_names[] = {"color", "heat", nullptr};
 const char* const drawing_names[] = {"image", "rectangles", nullptr};
+const char* const heat_scale_names[] = {"linear", "log", nullptr};
 enum { view_color, view_heat };
 enum { drawing_image, drawing_rectangles };
+enum { heat_linear, heat_log };
 
 // typeMask bits: what a change of the option requires.
-enum : int { buffer_changed = 1, geometry_changed = 2, look_changed = 4 };
+enum : int { buffer_changed = 1, geometry_changed = 2, look_changed = 4, heat_changed = 8 };
 
 #define VFB_OPTION(field) static_cast<int>(offsetof(widget_options, field))
 
@@ -83,6 +86,8 @@ const Tk_OptionSpec option_specs[] = {
     {TK_OPTION_STRING_TABLE, "-view", "view", "View", "color", -1, VFB_OPTION(view), 0, view_names, look_changed},
     {TK_OPTION_STRING_TABLE, "-drawing", "drawing", "Drawing", "image", -1, VFB_OPTION(drawing), 0, drawing_names,
      look_changed},
+    {TK_OPTION_STRING_TABLE, "-heatscale", "heatScale", "HeatScale", "linear", -1, VFB_OPTION(heat_scale), 0,
+     heat_scale_names, heat_changed},
     {TK_OPTION_STRING, "-progresscommand", "progressCommand", "Command", "", VFB_OPTION(progress_command), -1,
      TK_OPTION_NULL_OK, nullptr, 0},
     {TK_OPTION_STRING, "-inspectcommand", "inspectCommand", "Command", "", VFB_OPTION(inspect_command), -1,
@@ -181,9 +186,9 @@ void refresh_heat_colors(widget* w) {
     w->heat_colors.assign(w->colors.size(), pack_linear(w, 0, 0, 0));
     if (w->tests.size() != w->colors.size()) return;
     const std::uint32_t most = *std::max_element(w->tests.begin(), w->tests.end());
-    const double scale = most == 0 ? 0 : 1.0 / most;
+    const bool log_scale = w->options.heat_scale == heat_log;
     for (std::size_t i = 0; i < w->tests.size(); ++i) {
-        const color c = heat_color(w->tests[i] * scale);
+        const color c = heat_color(heat_fraction(w->tests[i], most, log_scale));
         w->heat_colors[i] = pack_linear(w, c.r, c.g, c.b);
     }
 }
@@ -310,10 +315,8 @@ int configure(Tcl_Interp* interp, widget* w, int objc, Tcl_Obj* const objv[]) {
         return TCL_ERROR;
     }
     Tk_FreeSavedOptions(&saved);
-    if (new_buffer) {
-        refresh_colors(w, {0, 0, w->pixels->width(), w->pixels->height()});
-        refresh_heat_colors(w);
-    }
+    if (new_buffer) refresh_colors(w, {0, 0, w->pixels->width(), w->pixels->height()});
+    if (new_buffer || (mask & heat_changed)) refresh_heat_colors(w);
     if (new_buffer || (mask & geometry_changed)) request_geometry(w);
     schedule_full_redraw(w);
     return TCL_OK;
@@ -617,6 +620,49 @@ int cmd_wait(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     return TCL_OK;
 }
 
+// heat_legend ?steps?: what the heat map's legend shows, as a dictionary: min and max, the
+// fewest and most tests of a pixel in the last render (both 0 before one); scale, linear or
+// log (-heatscale); colors, `steps` (default 64) colours "#rrggbb" from the bottom of the
+// scale (0 tests) to the top (max); ticks, five {count fraction} pairs for labels, at 0, a
+// quarter, ..., all of the scale, with count the whole number of tests there.
+int cmd_heat_legend(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+    if (objc != 2 && objc != 3) return wrong_args(interp, objv, "?steps?");
+    int steps = 64;
+    if (objc == 3 && Tcl_GetIntFromObj(interp, objv[2], &steps) != TCL_OK) return TCL_ERROR;
+    if (steps < 2 || steps > 4096)
+        return set_error(interp, "heat_legend: steps must be 2 to 4096, not " + std::to_string(steps));
+    const bool log_scale = w->options.heat_scale == heat_log;
+    std::uint32_t least = 0, most = 0;
+    if (!w->tests.empty()) {
+        const auto [lo, hi] = std::minmax_element(w->tests.begin(), w->tests.end());
+        least = *lo;
+        most = *hi;
+    }
+    Tcl_Obj* colors = Tcl_NewListObj(0, nullptr);
+    for (int i = 0; i < steps; ++i) {
+        const color c = heat_color(static_cast<double>(i) / (steps - 1));
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "#%02x%02x%02x", linear_to_srgb8(c.r),
+                      linear_to_srgb8(c.g), linear_to_srgb8(c.b));
+        Tcl_ListObjAppendElement(nullptr, colors, Tcl_NewStringObj(hex, -1));
+    }
+    Tcl_Obj* ticks = Tcl_NewListObj(0, nullptr);
+    for (int i = 0; i <= 4; ++i) {
+        const double f = i / 4.0;
+        Tcl_Obj* pair[2] = {Tcl_NewWideIntObj(heat_count(f, most, log_scale)), Tcl_NewDoubleObj(f)};
+        Tcl_ListObjAppendElement(nullptr, ticks, Tcl_NewListObj(2, pair));
+    }
+    Tcl_Obj* d = Tcl_NewDictObj();
+    auto put = [&](const char* key, Tcl_Obj* value) { Tcl_DictObjPut(nullptr, d, Tcl_NewStringObj(key, -1), value); };
+    put("min", Tcl_NewWideIntObj(least));
+    put("max", Tcl_NewWideIntObj(most));
+    put("scale", Tcl_NewStringObj(heat_scale_names[w->options.heat_scale], -1));
+    put("colors", colors);
+    put("ticks", ticks);
+    Tcl_SetObjResult(interp, d);
+    return TCL_OK;
+}
+
 int cmd_inspect(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     if (objc != 4) return wrong_args(interp, objv, "tk_x tk_y");
     int xy[2];
@@ -681,7 +727,8 @@ struct named_subcommand {
 };
 const named_subcommand subcommands[] = {
     {"cancel", cmd_cancel},       {"cget", cmd_cget},         {"clear", cmd_clear},
-    {"configure", cmd_configure}, {"get_pixel", cmd_get_pixel}, {"inspect", cmd_inspect},
+    {"configure", cmd_configure}, {"get_pixel", cmd_get_pixel}, {"heat_legend", cmd_heat_legend},
+    {"inspect", cmd_inspect},
     {"load", cmd_load},           {"pan", cmd_pan},           {"pixel_size", cmd_pixel_size},
     {"progress", cmd_progress},   {"put_pixel", cmd_put_pixel}, {"redraw", cmd_redraw},
     {"render", cmd_render},       {"save", cmd_save},         {"set_min_x", cmd_set_min_x},
