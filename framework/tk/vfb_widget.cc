@@ -143,6 +143,13 @@ void copy_finished_tiles(widget* w);
 int screen_width(const widget* w) { return Tk_IsMapped(w->tkwin) ? Tk_Width(w->tkwin) : Tk_ReqWidth(w->tkwin); }
 int screen_height(const widget* w) { return Tk_IsMapped(w->tkwin) ? Tk_Height(w->tkwin) : Tk_ReqHeight(w->tkwin); }
 
+// A linear colour as Tk writes it, "#rrggbb" in sRGB.
+Tcl_Obj* srgb_hex(double r, double g, double b) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "#%02x%02x%02x", linear_to_srgb8(r), linear_to_srgb8(g), linear_to_srgb8(b));
+    return Tcl_NewStringObj(hex, -1);
+}
+
 int set_error(Tcl_Interp* interp, const std::string& message) {
     Tcl_SetObjResult(interp, Tcl_NewStringObj(message.c_str(), -1));
     return TCL_ERROR;
@@ -641,10 +648,7 @@ int cmd_heat_legend(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv
     Tcl_Obj* colors = Tcl_NewListObj(0, nullptr);
     for (int i = 0; i < steps; ++i) {
         const color c = heat_color(static_cast<double>(i) / (steps - 1));
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "#%02x%02x%02x", linear_to_srgb8(c.r),
-                      linear_to_srgb8(c.g), linear_to_srgb8(c.b));
-        Tcl_ListObjAppendElement(nullptr, colors, Tcl_NewStringObj(hex, -1));
+        Tcl_ListObjAppendElement(nullptr, colors, srgb_hex(c.r, c.g, c.b));
     }
     Tcl_Obj* ticks = Tcl_NewListObj(0, nullptr);
     for (int i = 0; i <= 4; ++i) {
@@ -674,15 +678,13 @@ int cmd_inspect(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) 
     if (w->pixels->contains(x, y)) {
         const vfb_pixel p = w->pixels->get_pixel(x, y);
         const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(w->pixels->width()) + static_cast<std::size_t>(x);
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "#%02x%02x%02x", linear_to_srgb8(p.r()), linear_to_srgb8(p.g()), linear_to_srgb8(p.b()));
         auto put = [&](const char* key, Tcl_Obj* value) { Tcl_DictObjPut(nullptr, d, Tcl_NewStringObj(key, -1), value); };
         put("x", Tcl_NewIntObj(x));
         put("y", Tcl_NewIntObj(y));
         put("r", Tcl_NewDoubleObj(p.r()));
         put("g", Tcl_NewDoubleObj(p.g()));
         put("b", Tcl_NewDoubleObj(p.b()));
-        put("srgb", Tcl_NewStringObj(hex, -1));
+        put("srgb", srgb_hex(p.r(), p.g(), p.b()));
         // Intersection and bounding-volume tests for this pixel in the last render, or {}.
         put("tests", i < w->tests.size() ? Tcl_NewWideIntObj(w->tests[i]) : Tcl_NewObj());
     }
