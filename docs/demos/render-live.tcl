@@ -15,10 +15,9 @@ demo::setup "Render live"
 set room assignments/04-shading/scenes/room.ray_trace
 set v [demo::pane room "$room (400 x 320 pixels)" -maxx 399 -maxy 319]
 # The same room with 128 rays per pixel: about 60 times the work, so the tiles can be seen.
-set slow [demo::derived_scene $room room-128-rays.ray_trace {
-    {^samples .*$} {samples 128}
-    {^sampler .*$} {sampler jittered}
-}]
+set slow [demo::derived_scene $room room-128-rays.ray_trace [list \
+    {^samples .*$} "samples [demo::rays 128]" \
+    {^sampler .*$} {sampler jittered}]]
 demo::screenshot_at manual
 
 # Takes the screenshot once a slow render is 42 % done (mid-way through a row of tiles).

@@ -16,9 +16,12 @@
 #   VL_DEMO_AUTOEXIT=1         run every step by itself, one short pause apart, and exit
 #                              (status 0; 1 when a step fails; 3 when it takes too long)
 #   VL_DEMO_SCREENSHOT=FILE    write a PNG of the window at the demo's screenshot step
-#                              (the last one unless the demo says otherwise); with
-#                              VL_DEMO_AUTOEXIT, exit right after it
+#                              (the last one unless the demo says otherwise)
 #   VL_DEMO_PAUSE_MS=N         the pause between steps with VL_DEMO_AUTOEXIT (default 300)
+#   VL_DEMO_TIMEOUT_S=N        with VL_DEMO_AUTOEXIT, give up (status 3) after N seconds
+#                              (default 120)
+#   VL_DEMO_FAST=1             slow renders trace a sixteenth of their rays (demo::rays):
+#                              the tests set it, so that a sanitizer build finishes in time
 
 namespace eval ::demo {
     # The repository: this file is docs/demos/lib/demo.tcl.
@@ -32,6 +35,8 @@ namespace eval ::demo {
     variable screenshot [expr {[info exists ::env(VL_DEMO_SCREENSHOT)] ? $::env(VL_DEMO_SCREENSHOT) : ""}]
     variable screenshot_step -1
     variable pause_ms [expr {[info exists ::env(VL_DEMO_PAUSE_MS)] ? $::env(VL_DEMO_PAUSE_MS) : 300}]
+    variable timeout_s [expr {[info exists ::env(VL_DEMO_TIMEOUT_S)] ? $::env(VL_DEMO_TIMEOUT_S) : 120}]
+    variable fast [expr {[info exists ::env(VL_DEMO_FAST)] && $::env(VL_DEMO_FAST) ni {"" 0}}]
     variable temp_dir ""
     variable caption_title ""
     variable caption_text ""
@@ -137,15 +142,18 @@ proc ::demo::screenshot_at {n} {
     variable screenshot_step [expr {$n eq "manual" ? -2 : $n - 1}]
 }
 
-# Takes the screenshot now if one was asked for and not yet taken; with VL_DEMO_AUTOEXIT,
-# then exits.
+# Takes the screenshot now if one was asked for and not yet taken.
 proc ::demo::shoot {} {
     variable screenshot
-    variable auto
     if {$screenshot eq ""} return
     demo::take_screenshot $screenshot
     set screenshot ""
-    if {$auto} { demo::quit }
+}
+
+# The rays per pixel for a render meant to be slow: n, or with VL_DEMO_FAST n / 16 (at least 1).
+proc ::demo::rays {n} {
+    variable fast
+    return [expr {$fast ? max(1, $n / 16) : $n}]
 }
 
 # Writes a scene file in the demo's temporary folder and returns its path.
@@ -288,10 +296,15 @@ proc ::demo::quit {} {
 
 proc ::demo::start {} {
     variable auto
+    variable timeout_s
     if {$auto} {
-        # A demo that runs by itself must not hang a test: give up after two minutes.
-        after 120000 {
-            puts stderr "[set ::demo::script]: step [expr {$::demo::current + 1}] still running after 120 s with VL_DEMO_AUTOEXIT set: giving up"
+        # A demo that runs by itself must not hang a test: give up after VL_DEMO_TIMEOUT_S.
+        if {![string is double -strict $timeout_s] || $timeout_s <= 0} {
+            demo::fail "VL_DEMO_TIMEOUT_S is '$timeout_s': give a number of seconds above 0, such as 120"
+        }
+        after [expr {round(1000 * $timeout_s)}] {
+            puts stderr "[set ::demo::script]: step [expr {$::demo::current + 1}] still running after\
+                $::demo::timeout_s s with VL_DEMO_AUTOEXIT set: giving up (VL_DEMO_TIMEOUT_S allows more)"
             demo::cleanup
             exit 3
         }
