@@ -1,9 +1,11 @@
 // The grader's command line: `grader/run COMMAND ...` (see grader/README.md). Each
 // command is one entry of the table below, so new ones (roster, gradescope) slot in
 // beside the others, like imgdiff.
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -24,6 +26,7 @@
 #include "install.hh"
 #include "report_html.hh"
 #include "results_json.hh"
+#include "roster.hh"
 #include "sandbox.hh"
 #include "terminal_summary.hh"
 #include "thresholds.hh"
@@ -132,6 +135,78 @@ int grade_command(const installation& in, arguments args) {
     const auto g = grade_into(in, args[0], args[1], out, options);
     vl::grader::print_summary(std::cout, g, out, vl::grader::stdout_wants_colour());
     return 0;
+}
+
+/// The CPUs this process may use (a cluster's allocation, taskset), at least 1.
+int usable_cpus() {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+    return 1;
+}
+
+/// This program, for the roster to run once per submission.
+fs::path own_program() {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) throw grader_error("cannot find the grader's own program (/proc/self/exe): " + ec.message());
+    return self;
+}
+
+int positive_number(const std::string& text, const std::string& what) {
+    char* end = nullptr;
+    const long n = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || n < 1 || n > 1024) throw usage_error{what + " needs a whole number from 1, not '" + text + "'"};
+    return static_cast<int>(n);
+}
+
+/// `roster ASSIGNMENT DIR [-j N] [--out DIR] [--regrade NAME...] [--shard K/N] [--weaker-sandbox]`.
+int roster_command(const installation& in, arguments args) {
+    vl::grader::roster_options o;
+    // --regrade takes the names after it, up to the next option.
+    if (const auto at = std::find(args.begin(), args.end(), "--regrade"); at != args.end()) {
+        auto end = at + 1;
+        while (end != args.end() && !end->starts_with("-")) o.regrade.push_back(*end++);
+        if (o.regrade.empty()) throw usage_error{"--regrade needs the names of the students to grade again"};
+        args.erase(at, end);
+    }
+    std::string jobs = take_option(args, "-j");
+    for (auto it = args.begin(); it != args.end(); ++it)
+        if (jobs.empty() && it->size() > 2 && it->starts_with("-j") && std::isdigit(static_cast<unsigned char>((*it)[2]))) {
+            jobs = it->substr(2);
+            args.erase(it);
+            break;
+        }
+    if (jobs.empty()) jobs = take_option(args, "--jobs");
+    std::string out = take_option(args, "--out");
+    const std::string shard = take_option(args, "--shard");
+    o.weaker_sandbox = take_flag(args, "--weaker-sandbox");
+    if (args.size() != 2 && !o.regrade.empty() && args.size() < 2)
+        throw usage_error{"give ASSIGNMENT and DIR before --regrade NAME..."};
+    expect_count(args, 2);
+    const vl::grader::stage_info& stage = in.find_stage(args[0]);
+    o.jobs = jobs.empty() ? usable_cpus() : positive_number(jobs, "-j");
+    if (!shard.empty()) {
+        const auto slash = shard.find('/');
+        if (slash == std::string::npos) throw usage_error{"--shard needs K/N (task K of N, K from 0), not '" + shard + "'"};
+        o.shards = positive_number(shard.substr(slash + 1), "--shard's N");
+        const std::string k = shard.substr(0, slash);
+        o.shard = k == "0" ? 0 : positive_number(k, "--shard's K");
+        if (o.shard >= o.shards) throw usage_error{"--shard " + shard + ": K must be below N (K counts from 0)"};
+    }
+    const fs::path dir = fs::absolute(args[1]).lexically_normal();
+    if (out.empty()) out = default_out(in, stage.name, dir.string()).parent_path() /
+                           ("roster-" + default_out(in, stage.name, dir.string()).filename().string());
+    o.out = fs::absolute(out).lexically_normal();
+    o.progress_bar = isatty(2) != 0;
+    o.grader_program = own_program();
+    return vl::grader::run_roster(in, stage, dir, o);
+}
+
+/// `roster-collect OUT`: the CSV and the leaderboard from the records in OUT.
+int roster_collect_command(const installation&, const arguments& args) {
+    expect_count(args, 1);
+    return vl::grader::collect_roster(fs::absolute(args[0]).lexically_normal());
 }
 
 /// \brief A calibration case: grader/tests/submissions/NN-name/CASE/expected.toml.
@@ -532,6 +607,15 @@ const std::vector<command>& commands() {
          "grade one submission (a folder, a student kit, or a .zip/.tar.gz of one); writes DIR/results.json "
          "and DIR/report.html",
          grade_command},
+        {"roster", "roster ASSIGNMENT DIR [-j N] [--out DIR] [--regrade NAME...] [--shard K/N] [--weaker-sandbox]",
+         "grade every submission in DIR (one folder or archive per student), N at once (default: one per CPU), "
+         "each in its own sandboxes; a rerun grades only what is new or changed; writes roster.csv, "
+         "grades/NAME-HASH/ and, where the rubric has one, leaderboard.csv into --out DIR",
+         roster_command},
+        {"roster-collect", "roster-collect OUT",
+         "write OUT/roster.csv and OUT/leaderboard.csv from the grades in OUT (after a cluster's array tasks, "
+         "grader/slurm/)",
+         roster_collect_command},
         {"export-kit", "export-kit DIR", "write the student kit to DIR and DIR.tar.gz (no reference, no hidden tests)",
          export_kit_command},
         {"list", "list", "the assignments this build can grade", list_command},
