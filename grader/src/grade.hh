@@ -9,6 +9,7 @@
 
 #include "catch_runner.hh"
 #include "install.hh"
+#include "rubric.hh"
 #include "sweeps.hh"
 
 namespace vl::grader {
@@ -57,6 +58,7 @@ struct graded_submission {
     std::vector<graded_item> items;  ///< the build first, then by category
     std::vector<category_total> categories;
     std::vector<graded_chart> charts;
+    std::vector<leaderboard_value> leaderboard;  ///< the rubric's [[leaderboard]] values this submission earned
     double score = 0, max_score = 0, seconds = 0;
 };
 

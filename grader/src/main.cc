@@ -350,6 +350,15 @@ std::vector<std::string> gradescope_format_problems(const nlohmann::json& r) {
     need(r, "execution_time", number, "a number", "");
     need(r, "output", string, "a string", "");
     need(r, "stdout_visibility", visibility, "a visibility", "");
+    if (r.contains("leaderboard")) {
+        if (!r["leaderboard"].is_array()) problems.push_back("\"leaderboard\" must be an array");
+        else
+            for (const auto& v : r["leaderboard"])
+                if (!v.is_object() || !v.contains("name") || !v["name"].is_string() || !v.contains("value") ||
+                    !(v["value"].is_number() || v["value"].is_string()) ||
+                    (v.contains("order") && v["order"] != "asc" && v["order"] != "desc"))
+                    problems.push_back("a leaderboard entry needs a name, a value (number or text) and order asc or desc");
+    }
     if (!r.contains("tests") || !r["tests"].is_array()) {
         problems.push_back("\"tests\" must be an array");
         return problems;

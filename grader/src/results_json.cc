@@ -87,6 +87,11 @@ std::string results_json(const graded_submission& g) {
     r["output"] = summary_text(g);
     r["stdout_visibility"] = "hidden";
     r["tests"] = tests;
+    if (!g.leaderboard.empty()) {
+        json board = json::array();
+        for (const leaderboard_value& v : g.leaderboard) board.push_back({{"name", v.name}, {"value", v.value}, {"order", v.order}});
+        r["leaderboard"] = board;
+    }
     r["extra_data"] = {{"assignment", g.assignment}, {"max_score", tidy(g.max_score)}, {"built", g.built},
                        {"categories", categories}, {"charts", charts}, {"sandbox", g.sandbox}, {"submission", g.submission},
                        {"graded_at", g.started_at}};

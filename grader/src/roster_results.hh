@@ -7,13 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace vl::grader {
+#include "rubric.hh"
 
-/// \brief One value of a leaderboard, as results.json's `leaderboard` has it.
-struct leaderboard_value {
-    std::string name, order;  ///< order: "asc" (smaller is better) or "desc"
-    double value = 0;
-};
+namespace vl::grader {
 
 /// \brief What the roster knows of one student: the record in OUT/results/NAME.json.
 struct roster_record {

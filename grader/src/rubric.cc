@@ -135,6 +135,34 @@ void read_measurements(const fs::path& file, const toml::table& t, const std::se
             r.charts.push_back(c);
         }
     }
+    if (const toml::node* n = t.get("leaderboard")) {
+        const toml::array* a = n->as_array();
+        if (!a || !a->is_array_of_tables())
+            throw grader_error(place(file, *n) + ": write each value of the leaderboard as [[leaderboard]]");
+        for (const toml::node& e : *a) {
+            const toml::table& s = *e.as_table();
+            only_keys(file, s, "[[leaderboard]]", {"name", "chart", "series", "x", "order", "category"});
+            rubric_leaderboard l;
+            l.name = text(file, s, "name", true, "[[leaderboard]]");
+            l.chart = text(file, s, "chart", true, "[[leaderboard]]");
+            if (std::none_of(r.charts.begin(), r.charts.end(), [&](const rubric_chart& c) { return c.test == l.chart; }))
+                throw grader_error(place(file, e) + ": chart '" + l.chart + "' is no [[chart]]'s test (a [[leaderboard]] "
+                                                    "takes its value from a chart)");
+            l.series = text(file, s, "series", true, "[[leaderboard]]");
+            if (!s.get("x")) throw grader_error(place(file, e) + ": a [[leaderboard]] needs x, the point of the series");
+            l.x = number(file, s, "x", 0);
+            l.order = text(file, s, "order", false, "[[leaderboard]]");
+            if (l.order.empty()) l.order = "asc";
+            if (l.order != "asc" && l.order != "desc")
+                throw grader_error(place(file, e) + ": order must be \"asc\" (smaller is better) or \"desc\", not \"" +
+                                   l.order + "\"");
+            l.category = text(file, s, "category", true, "[[leaderboard]]");
+            if (std::none_of(r.categories.begin(), r.categories.end(),
+                             [&](const rubric_category& c) { return c.name == l.category; }))
+                throw grader_error(place(file, e) + ": category '" + l.category + "' is not a [[category]]");
+            r.leaderboard.push_back(l);
+        }
+    }
 }
 
 }  // namespace

@@ -70,6 +70,25 @@ struct rubric_chart {
     bool log_x = false, log_y = false;
 };
 
+/// \brief A value of the leaderboard (results.json's `leaderboard`, the roster's
+/// leaderboard.csv): the submission's point of a [[chart]] at one series and x, such as
+/// the BVH's tests per ray at N = 4096. It counts only when the submission has full marks
+/// in `category`, so a fast wrong answer never leads.
+struct rubric_leaderboard {
+    std::string name;    ///< the column's name
+    std::string chart;   ///< the [[chart]]'s test
+    std::string series;  ///< one of the chart's series
+    double x = 0;
+    std::string order = "asc";  ///< "asc": smaller is better; "desc": larger is better
+    std::string category;       ///< the [[category]] that must have full marks
+};
+
+/// \brief One value of a submission's leaderboard, as results.json's `leaderboard` has it.
+struct leaderboard_value {
+    std::string name, order;  ///< order: "asc" (smaller is better) or "desc"
+    double value = 0;
+};
+
 /// \brief A whole rubric.
 struct rubric {
     std::filesystem::path file;
@@ -81,6 +100,7 @@ struct rubric {
     std::vector<rubric_scene> scenes;
     std::vector<rubric_sweep> sweeps;
     std::vector<rubric_chart> charts;
+    std::vector<rubric_leaderboard> leaderboard;
 
     /// The category of test `t`: the first whose tests or tags claim it, or nullptr. A
     /// sweep or chart test ([sweep], [chart]) is in no category: its [[sweep]] or
