@@ -28,10 +28,17 @@ void write_new_file(const std::filesystem::path& file, std::string_view data) {
 }
 
 void replace_file(const std::filesystem::path& file, std::string_view data) {
-    const std::filesystem::path temporary = file.string() + ".partial";
+    // Named for this process, so that two processes replacing one file (a cluster's array
+    // tasks) never write the same temporary file; flushed to disk before the rename, so
+    // that a machine that goes down keeps the old file or the new one, never a torn one.
+    const std::filesystem::path temporary = file.string() + ".partial-" + std::to_string(getpid());
     std::error_code ec;
     std::filesystem::remove(temporary, ec);
     write_new_file(temporary, data);
+    if (const int fd = open(temporary.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC); fd >= 0) {
+        fsync(fd);
+        close(fd);
+    }
     std::filesystem::rename(temporary, file, ec);
     if (ec) throw grader_error("cannot write " + file.string() + ": " + ec.message());
 }

@@ -15,7 +15,8 @@ namespace vl::grader {
 /// Throws grader_error (a full disk is the grader's problem, not the student's).
 void write_new_file(const std::filesystem::path& file, std::string_view data);
 
-/// Writes `data` to `file` whole or not at all: a temporary file beside it, then a rename.
+/// Writes `data` to `file` whole or not at all: a temporary file beside it (named for this
+/// process), flushed to disk, then a rename.
 void replace_file(const std::filesystem::path& file, std::string_view data);
 
 /// The contents of `file` when it is a regular file (not a link) of at most `cap` bytes;
