@@ -9,6 +9,7 @@
 
 #include "build_submission.hh"
 #include "catch_runner.hh"
+#include "reference_side.hh"
 #include "rubric.hh"
 #include "sandbox.hh"
 #include "scenes.hh"
@@ -89,20 +90,6 @@ std::string chart_stem(const std::string& test) {
     return out.substr(0, 80);
 }
 
-/// The points of a [sweep] or [chart] test as the reference measures them. The reference
-/// must run it cleanly (and, for a sweep, be stable where the rubric says a correct method
-/// is): otherwise the test or the rubric is wrong, and no student may lose points for it.
-measured_points reference_points(const stage_info& stage, const test_case_info& test, const rubric& r,
-                                 const sandbox_capabilities& caps) {
-    const test_outcome o = run_test_case(stage.trusted_tests, test, r.test_limits, caps);
-    if (o.result != test_outcome::status::passed)
-        throw grader_error("the hidden test '" + test.name + "' " + to_string(o.result) + " with the reference: " +
-                           o.message);
-    measured_points m = read_points(o.warnings);
-    if (!m.problem.empty()) throw grader_error("the hidden test '" + test.name + "' with the reference: " + m.problem);
-    return m;
-}
-
 const test_case_info& named_test(const std::vector<test_case_info>& tests, const std::string& name) {
     return *std::find_if(tests.begin(), tests.end(), [&](const test_case_info& t) { return t.name == name; });
 }
@@ -135,26 +122,20 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
         return r.grade_budget_seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
 
-    // The expected tests come from the trusted build, never from the submission's.
-    std::vector<test_case_info> tests;
-    std::set<std::string> kit_passes;
-    if (!stage.trusted_tests.empty()) {
-        tests = list_trusted_tests(stage.trusted_tests, work / "trusted", caps);
-        if (!stage.tests_on_stubs.empty()) kit_passes = tests_passing_on_stubs(stage.tests_on_stubs, work / "stubs", caps);
-    }
+    // The expected tests come from the trusted build, never from the submission's; they,
+    // the tests the stubs pass and the reference's sweeps and charts are measured before
+    // the submission is looked at (once per build: reference_side.hh).
+    reference_side ref = reference_side_of(in, stage, r, work, caps);
+    const std::vector<test_case_info>& tests = ref.tests;
+    const std::set<std::string>& kit_passes = ref.kit_passes;
     check_rubric(r, tests);
-
-    // The reference's sweeps and charts, measured before the submission is looked at.
-    std::map<std::string, measured_points> reference;
+    std::map<std::string, measured_points>& reference = ref.points;
     for (const rubric_sweep& s : r.sweeps) {
-        measured_points m = reference_points(stage, named_test(tests, s.test), r, caps);
-        const sweep_verdict v = judge_sweep(s, m.sweep, m.sweep);
+        const sweep_verdict v = judge_sweep(s, reference[s.test].sweep, reference[s.test].sweep);
         if (!v.passed)
             throw grader_error(r.file.string() + ": the reference is not stable where [[sweep]] '" + s.test +
                                "' says a correct method is: " + v.message);
-        reference[s.test] = std::move(m);
     }
-    for (const rubric_chart& c : r.charts) reference[c.test] = reference_points(stage, named_test(tests, c.test), r, caps);
 
     // The items, in rubric order, all "not run" until they run.
     graded_item build;
