@@ -87,6 +87,7 @@ struct running_grade {
     pid_t pid = -1;
     fs::path work, log;
     clock_type::time_point started;
+    bool overran = false;  ///< killed by the roster's guard (a grade that hangs)
 };
 
 std::string clock_text(double seconds) {
@@ -164,6 +165,7 @@ void start_grade(running_grade& g, const installation& in, const stage_info& sta
     if (pid == 0) {
         prctl(PR_SET_PDEATHSIG, SIGKILL);
         if (getppid() != parent) _exit(127);
+        setpgid(0, 0);  // a Ctrl-C reaches the roster, which stops its grades itself
         signal(SIGINT, SIG_DFL);
         signal(SIGTERM, SIG_DFL);
         const int null = open("/dev/null", O_RDONLY);
@@ -212,7 +214,7 @@ void claim_out(const fs::path& out, const stage_info& stage, const fs::path& dir
 
 }  // namespace
 
-std::vector<roster_entry> list_submissions(const fs::path& dir, std::vector<std::string>& skipped) {
+std::vector<roster_entry> list_submissions(const fs::path& dir, std::vector<std::string>& skipped, const fs::path& out) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec))
         throw grader_error(dir.string() + ": no such folder (give the folder that holds one folder or archive per student)");
@@ -223,6 +225,10 @@ std::vector<roster_entry> list_submissions(const fs::path& dir, std::vector<std:
         const std::string file = e.path().filename().string();
         if (file.empty() || file[0] == '.') continue;
         std::string name = file;
+        if (const auto rel = out.lexically_relative(fs::absolute(e.path())); !out.empty() && !rel.empty() && *rel.begin() != "..") {
+            skipped.push_back(file + ": it holds the roster's own output folder");
+            continue;
+        }
         if (fs::is_directory(e.status(ec))) {
         } else if (const std::string suffix = archive_suffix(file); !suffix.empty() && fs::is_regular_file(e.status(ec))) {
             name = file.substr(0, file.size() - suffix.size());
@@ -272,7 +278,7 @@ std::string content_hash(const fs::path& submission) {
 
 int run_roster(const installation& in, const stage_info& stage, const fs::path& dir, const roster_options& o) {
     std::vector<std::string> skipped;
-    const std::vector<roster_entry> all = list_submissions(dir, skipped);
+    const std::vector<roster_entry> all = list_submissions(dir, skipped, o.out);
     for (const std::string& s : skipped) std::cout << "skipped " << s << "\n";
     for (const std::string& name : o.regrade)
         if (std::none_of(all.begin(), all.end(), [&](const roster_entry& e) { return e.name == name; }))
@@ -339,6 +345,11 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
     std::vector<std::string> failures;
     std::size_t next = 0;
     auto finish = [&](running_grade& g, int status) {
+        std::error_code ignored;
+        if (stop_signal) {  // stopped: this grade counts for nothing, and is done again next time
+            fs::remove_all(g.work, ignored);
+            return;
+        }
         const double seconds = std::chrono::duration<double>(clock_type::now() - g.started).count();
         const std::string stem = roster_file_stem(g.entry.name);
         const bool exited = WIFEXITED(status) && WEXITSTATUS(status) == 0;
@@ -360,12 +371,15 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
                 }
                 fs::rename(g.work, final_dir);
                 write_record(out, rec);
+                fs::remove(out / "results" / (stem + ".log"), ignored);  // of an earlier grader error
             } catch (const std::exception& e) {
                 problem = e.what();
             }
         } else {
-            problem = WIFSIGNALED(status) ? std::string("the grade was killed by signal ") + strsignal(WTERMSIG(status))
-                                          : "the grader failed: " + last_line(g.log);
+            problem = g.overran ? "the grade did not end within " + std::to_string(static_cast<int>(guard_seconds)) +
+                                      " s (twice the rubric's grade_budget_seconds, and 300): the grader hung"
+                      : WIFSIGNALED(status) ? std::string("the grade was killed by signal ") + strsignal(WTERMSIG(status))
+                                            : "the grader failed: " + last_line(g.log);
         }
         ++p.done;
         if (!problem.empty()) {
@@ -378,7 +392,6 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
             err.status = "grader error";
             err.message = problem;
             const fs::path kept_log = out / "results" / (stem + ".log");
-            std::error_code ignored;
             fs::rename(g.log, kept_log, ignored);
             try {
                 write_record(out, err);
@@ -392,7 +405,6 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
                           rec.verdict.c_str(), seconds);
             p.line(p.head(g.entry.name) + "  " + score);
         }
-        std::error_code ignored;
         fs::remove_all(g.work, ignored);
     };
 
@@ -419,7 +431,8 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
                 reaped = true;
                 continue;
             }
-            if (std::chrono::duration<double>(clock_type::now() - it->started).count() > guard_seconds) {
+            if (!it->overran && std::chrono::duration<double>(clock_type::now() - it->started).count() > guard_seconds) {
+                it->overran = true;
                 kill(it->pid, SIGKILL);  // reaped, as killed, on the next round
             }
             ++it;
@@ -464,7 +477,7 @@ int collect_roster(const fs::path& out, bool quiet, bool locked) {
     if (!dir.empty() && fs::is_directory(dir, ec)) {
         std::vector<std::string> skipped;
         std::set<std::string> names;
-        for (const roster_entry& e : list_submissions(dir, skipped)) names.insert(e.name);
+        for (const roster_entry& e : list_submissions(dir, skipped, out)) names.insert(e.name);
         for (const roster_record& r : records)
             if (!names.count(r.student) && !quiet)
                 std::cout << "left out: " << r.student << " has a grade, but " << dir.string()

@@ -45,8 +45,10 @@ struct roster_options {
 
 /// The submissions in `dir`: each folder and each .zip, .tar.gz, .tgz or .tar, by name;
 /// hidden entries (a leading '.') are skipped, other files are listed in `skipped`. Two
-/// entries of one name (alice/ and alice.zip) are an error that names both.
-std::vector<roster_entry> list_submissions(const std::filesystem::path& dir, std::vector<std::string>& skipped);
+/// entries of one name (alice/ and alice.zip) are an error that names both. An entry that
+/// is or holds `out` (the roster's own output folder, absolute) is skipped too.
+std::vector<roster_entry> list_submissions(const std::filesystem::path& dir, std::vector<std::string>& skipped,
+                                           const std::filesystem::path& out = {});
 
 /// The content hash of a submission (16 hex digits of FNV-1a 64 over its files' paths,
 /// kinds and bytes, in sorted order; links by their target, never followed). It tells a
