@@ -69,6 +69,28 @@ void hash_file(fnv& h, const fs::path& file) {
     close(fd);
 }
 
+/// What grades a submission of `stage`: the grader program, the trusted programs and
+/// libraries, and every file of grader/hidden/NN-name (rubric, tests, scenes). A record
+/// made with another is graded again: a CSV never mixes two rubrics.
+std::uint64_t setup_hash(const installation& in, const stage_info& stage, const fs::path& grader_program) {
+    fnv h;
+    std::vector<fs::path> files = {grader_program, stage.trusted_tests, stage.tests_on_stubs, stage.reference_library,
+                                   stage.oracle_library, in.reference_renderer};
+    std::error_code ec;
+    std::vector<fs::path> hidden;
+    for (auto it = fs::recursive_directory_iterator(in.hidden_dir(stage), ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec))
+        if (it->is_regular_file(ec)) hidden.push_back(it->path());
+    std::sort(hidden.begin(), hidden.end());
+    files.insert(files.end(), hidden.begin(), hidden.end());
+    for (const fs::path& f : files) {
+        if (f.empty()) continue;
+        h.add(f.string());
+        hash_file(h, f);
+    }
+    return h.h;
+}
+
 std::string hex(std::uint64_t h) {
     char text[17];
     std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
@@ -280,6 +302,9 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
     std::vector<std::string> skipped;
     const std::vector<roster_entry> all = list_submissions(dir, skipped, o.out);
     for (const std::string& s : skipped) std::cout << "skipped " << s << "\n";
+    if (all.empty())
+        throw grader_error(dir.string() + " holds no submission: give the folder that holds one folder or .zip, .tar.gz, "
+                           ".tgz or .tar archive per student");
     for (const std::string& name : o.regrade)
         if (std::none_of(all.begin(), all.end(), [&](const roster_entry& e) { return e.name == name; }))
             throw grader_error("--regrade " + name + ": " + dir.string() + " has no submission of that name (a folder " +
@@ -308,23 +333,30 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
     std::vector<roster_entry> mine;
     for (std::size_t k = 0; k < all.size(); ++k)
         if (static_cast<int>(k % static_cast<std::size_t>(o.shards)) == o.shard) mine.push_back(all[k]);
+    const std::string setup = hex(setup_hash(in, stage, o.grader_program));
     std::vector<std::pair<roster_entry, std::string>> todo;
-    std::size_t unchanged = 0;
+    std::size_t unchanged = 0, other_setup = 0;
     for (const roster_entry& e : mine) {
         const std::string hash = content_hash(e.submission);
         roster_record r;
         const bool forced = std::find(o.regrade.begin(), o.regrade.end(), e.name) != o.regrade.end();
-        if (!forced && read_record(out, e.name, r) && r.status == "graded" && r.hash == hash &&
-            fs::is_regular_file(out / r.grade / "results.json", ec)) {
+        const bool have = read_record(out, e.name, r) && r.status == "graded" && r.hash == hash &&
+                          fs::is_regular_file(out / r.grade / "results.json", ec);
+        if (!forced && have && r.setup == setup) {
             ++unchanged;
             continue;
         }
+        if (have && r.setup != setup) ++other_setup;
         todo.emplace_back(e, hash);
     }
     const int jobs = std::max(1, std::min<int>(o.jobs, static_cast<int>(std::max<std::size_t>(todo.size(), 1))));
     std::cout << stage.name << ": " << mine.size() << " submission(s)" << (o.shards > 1 ? " in " + shard_name : "")
               << "; " << unchanged << " already graded and unchanged; grading " << todo.size() << " with -j " << jobs
-              << "\n" << std::flush;
+              << "\n";
+    if (other_setup)
+        std::cout << "of them, " << other_setup << " had been graded by another build of the grader, its hidden tests "
+                  << "or its rubric: every grade in the CSV comes from the same ones\n";
+    std::cout << std::flush;
 
     const rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.assignment_dir(stage) / "scenes", in.sanitized);
     // A grade keeps to its budget by itself; this only catches a grader that hangs.
@@ -360,6 +392,7 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
             try {
                 rec = record_from_results(g.work / "results.json", g.entry.name, g.entry.submission.string(), g.hash,
                                           grade_dir);
+                rec.setup = setup;
                 fs::rename(g.log, g.work / "grader.log");
                 // The old grade of the same content (a --regrade) makes way, then the new one
                 // moves in whole; only then does the record name it.

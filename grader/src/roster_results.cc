@@ -63,6 +63,7 @@ json to_json(const roster_record& r) {
     json board = json::array();
     for (const auto& v : r.leaderboard) board.push_back({{"name", v.name}, {"value", v.value}, {"order", v.order}});
     return {{"student", r.student}, {"submission", r.submission}, {"hash", r.hash}, {"assignment", r.assignment},
+            {"setup", r.setup},
             {"status", r.status}, {"grade", r.grade}, {"verdict", r.verdict}, {"message", r.message},
             {"score", r.score}, {"max_score", r.max_score}, {"seconds", r.seconds}, {"built", r.built},
             {"categories", categories},
@@ -77,6 +78,7 @@ roster_record from_json(const json& j) {
     r.submission = j.at("submission");
     r.hash = j.at("hash");
     r.assignment = j.value("assignment", "");
+    r.setup = j.value("setup", "");
     r.status = j.at("status");
     r.grade = j.value("grade", "");
     r.verdict = j.value("verdict", "");

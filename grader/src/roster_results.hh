@@ -14,6 +14,7 @@ namespace vl::grader {
 /// \brief What the roster knows of one student: the record in OUT/results/NAME.json.
 struct roster_record {
     std::string student, submission, hash, assignment;
+    std::string setup;         ///< what graded it: the grader, the hidden tests, the rubric (roster.hh)
     std::string status;        ///< "graded" or "grader error"
     std::string grade;         ///< the grade's folder, relative to OUT: grades/NAME-HASH
     std::string verdict;       ///< graded, did not build, refused (graded ones); grader error

@@ -138,6 +138,16 @@ grep -q "; 18 already graded and unchanged; grading 2 with" "$tmp/run4.log" && c
 "$grader" roster 02 "$dir" --out "$out" --regrade nobody >"$tmp/run5.log" 2>&1 && bad "--regrade of an unknown name was accepted"
 grep -q "has no submission of that name" "$tmp/run5.log" || { bad "--regrade nobody: the message:"; cat "$tmp/run5.log"; }
 
+# A record made by another build of the grader (or another rubric) is graded again.
+python3 - "$out/results/carol.json" <<'EOF'
+import json, sys
+r = json.load(open(sys.argv[1])); r["setup"] = "0000000000000000"; json.dump(r, open(sys.argv[1], "w"))
+EOF
+"$grader" roster 02 "$dir" --out "$out" >"$tmp/run4b.log" 2>&1 || bad "the rerun after another build failed"
+grep -q "; 19 already graded and unchanged; grading 1 with" "$tmp/run4b.log" &&
+  grep -q "of them, 1 had been graded by another build of the grader" "$tmp/run4b.log" &&
+  ok "a grade from another build of the grader is graded again" || { bad "another build's grade:"; cat "$tmp/run4b.log"; }
+
 # A changed submission is graded again, alone: bob breaks his sphere.
 patch --batch --silent -p1 -d "$dir/bob" -i "$cases/inward-normal/bug.patch" || bad "cannot change bob's submission"
 "$grader" roster 02 "$dir" --out "$out" >"$tmp/run6.log" 2>&1 || bad "the rerun after a change failed"
