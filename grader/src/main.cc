@@ -14,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@
 #include "report_html.hh"
 #include "results_json.hh"
 #include "roster.hh"
+#include "roster_results.hh"
 #include "sandbox.hh"
 #include "terminal_summary.hh"
 #include "thresholds.hh"
@@ -458,31 +460,58 @@ int calibrate_command(const installation& in, arguments args) {
     return problems.empty() ? 0 : 1;
 }
 
+/// `demo`: the bundled sample submissions of every stage (the calibration cases), each
+/// stage as a roster of them (build/default/grader/demo/NN-name), so they are graded side
+/// by side and a second demo grades only what changed since.
 int demo_command(const installation& in, arguments args) {
     const auto options = take_grade_options(args);
     expect_count(args, 0);
     const fs::path root = in.grader_build_dir / "demo";
     const bool colour = vl::grader::stdout_wants_colour();
+    std::map<std::string, std::vector<calibration_case>> by_stage;
+    for (const calibration_case& c : all_cases(in)) by_stage[c.stage].push_back(c);
     struct line {
-        std::string what;
+        std::string what, description;
         double score, max;
         fs::path report;
     };
     std::vector<line> lines;
-    for (const calibration_case& c : all_cases(in)) {
-        std::cout << "grading " << c.stage << " " << c.name << (c.description.empty() ? "" : ": " + c.description)
-                  << "\n" << std::flush;
-        const fs::path out = root / c.stage / c.name;
-        const auto g = grade_into(in, c.stage, c.submission, out, options);
-        lines.push_back({c.stage + " " + c.name, g.score, g.max_score, out / "report.html"});
+    int status = 0;
+    for (const auto& [stage_name, cases] : by_stage) {
+        // The roster's folder: one link per case, named for it, to the submission.
+        const fs::path dir = root / "submissions" / stage_name;
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+        fs::create_directories(dir);
+        for (const calibration_case& c : cases) {
+            const std::string file = c.submission.filename().string();
+            const auto dot = file.find('.');
+            fs::create_directory_symlink(fs::absolute(c.submission),
+                                         dir / (c.name + (fs::is_directory(c.submission) || dot == std::string::npos
+                                                              ? std::string()
+                                                              : file.substr(dot))));
+        }
+        vl::grader::roster_options o;
+        o.out = root / stage_name;
+        o.jobs = usable_cpus();
+        o.weaker_sandbox = options.weaker_sandbox;
+        o.progress_bar = isatty(2) != 0;
+        o.grader_program = own_program();
+        std::cout << "\n";
+        status |= vl::grader::run_roster(in, in.find_stage(stage_name), dir, o);
+        for (const calibration_case& c : cases) {
+            vl::grader::roster_record r;
+            if (!vl::grader::read_record(o.out, c.name, r) || r.status != "graded") continue;
+            lines.push_back({stage_name + " " + c.name, c.description, r.score, r.max_score, o.out / r.grade / "report.html"});
+        }
     }
     std::cout << "\n";
-    for (const line& l : lines) {
+    for (const line& l : lines)
         std::printf("%s%-34s %6.1f / %5.1f%s  %s\n", colour ? "\033[1m" : "", l.what.c_str(), l.score, l.max,
                     colour ? "\033[0m" : "", l.report.c_str());
-    }
-    std::cout << "\nOpen a report in a browser; each folder also holds its results.json.\n";
-    return 0;
+    std::cout << "\nOpen a report in a browser; each folder also holds its results.json. What each sample is: "
+                 "grader/tests/submissions/NN-name/README.md.\n";
+    return status;
 }
 
 int export_kit_command(const installation& in, const arguments& args) {

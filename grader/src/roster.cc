@@ -258,7 +258,14 @@ std::vector<roster_entry> list_submissions(const fs::path& dir, std::vector<std:
             skipped.push_back(file + ": neither a folder nor a .zip, .tar.gz, .tgz or .tar archive");
             continue;
         }
-        const auto [at, inserted] = by_name.emplace(name, fs::absolute(e.path()));
+        // A link the instructor made (a demo's, a shared folder's) is resolved here, once:
+        // the grade itself never follows one.
+        const fs::path resolved = fs::canonical(e.path(), ec);
+        if (ec) {
+            skipped.push_back(file + ": cannot be resolved (" + ec.message() + ")");
+            continue;
+        }
+        const auto [at, inserted] = by_name.emplace(name, resolved);
         if (!inserted)
             throw grader_error(dir.string() + ": two submissions of the student '" + name + "': " +
                                at->second.filename().string() + " and " + file + " (keep one of them)");
@@ -271,10 +278,9 @@ std::vector<roster_entry> list_submissions(const fs::path& dir, std::vector<std:
 std::string content_hash(const fs::path& submission) {
     fnv h;
     std::error_code ec;
-    const auto top = fs::symlink_status(submission, ec);
-    if (fs::is_regular_file(top) || fs::is_symlink(top)) {  // an archive (a link to one the instructor made)
+    if (!fs::is_directory(fs::symlink_status(submission, ec))) {  // an archive
         h.add("archive");
-        hash_file(h, fs::canonical(submission, ec));
+        hash_file(h, submission);
         return hex(h.h);
     }
     std::vector<std::pair<std::string, fs::file_status>> files;
