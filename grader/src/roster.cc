@@ -123,25 +123,37 @@ std::string clock_text(double seconds) {
 
 /// The progress: a bar redrawn on a terminal, and one line per finished grade.
 struct progress {
-    std::size_t total = 0, done = 0, errors = 0, running = 0;
-    std::size_t name_width = 0;  ///< the longest name, up to 24 characters: the lines' columns
+    std::size_t total = 0, done = 0, errors = 0;
+    std::size_t name_width = 0;  ///< the longest name, up to 32 characters: the lines' columns
+    int jobs = 1;
     bool bar = false;
+    double finished_seconds = 0;      ///< the durations of the grades finished so far, added up
+    std::vector<double> running_ages;  ///< how long each running grade has run
     clock_type::time_point started = clock_type::now();
+    mutable std::string drawn;
 
+    /// The time left: the grades not started, each the mean length so far, and what the
+    /// running ones probably still need, shared among the jobs.
     std::string eta() const {
         if (done == 0) return "ETA --:--";
-        const double elapsed = std::chrono::duration<double>(clock_type::now() - started).count();
-        return "ETA " + clock_text(elapsed / static_cast<double>(done) * static_cast<double>(total - done));
+        const double mean = finished_seconds / static_cast<double>(done);
+        double work = static_cast<double>(total - done - running_ages.size()) * mean;
+        for (const double age : running_ages) work += std::max(0.0, mean - age);
+        return "ETA " + clock_text(work / jobs);
     }
     void draw() const {
         if (!bar) return;
         const int width = 30;
         const int filled = total ? static_cast<int>(width * done / total) : width;
-        std::string line = "\r[" + std::string(static_cast<std::size_t>(filled), '#') +
-                           std::string(static_cast<std::size_t>(width - filled), '.') + "] " + std::to_string(done) +
-                           "/" + std::to_string(total) + "  " + std::to_string(running) + " grading" +
-                           (errors ? "  " + std::to_string(errors) + " grader error(s)" : std::string()) + "  " + eta() +
-                           "\033[K";
+        const double elapsed = std::chrono::duration<double>(clock_type::now() - started).count();
+        const std::string line = "\r[" + std::string(static_cast<std::size_t>(filled), '#') +
+                                 std::string(static_cast<std::size_t>(width - filled), '.') + "] " +
+                                 std::to_string(done) + "/" + std::to_string(total) + "  " +
+                                 std::to_string(running_ages.size()) + " grading" +
+                                 (errors ? "  " + std::to_string(errors) + " grader error(s)" : std::string()) + "  " +
+                                 clock_text(elapsed) + "  " + eta() + "\033[K";
+        if (line == drawn) return;  // a terminal is redrawn when something changed, at most every second
+        drawn = line;
         std::fputs(line.c_str(), stderr);
         std::fflush(stderr);
     }
@@ -156,8 +168,8 @@ struct progress {
     }
     void line(const std::string& text) const {
         if (bar) std::fputs("\r\033[K", stderr);
+        drawn.clear();
         std::cout << text << "\n" << std::flush;
-        draw();
     }
     void finish() const {
         if (bar) std::fputs("\r\033[K", stderr);
@@ -378,7 +390,8 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
     progress p;
     p.total = todo.size();
     p.bar = o.progress_bar;
-    for (const auto& t : todo) p.name_width = std::max(p.name_width, std::min<std::size_t>(t.first.name.size(), 24));
+    p.jobs = jobs;
+    for (const auto& t : todo) p.name_width = std::max(p.name_width, std::min<std::size_t>(t.first.name.size(), 32));
     std::vector<running_grade> running;
     std::vector<std::string> failures;
     std::size_t next = 0;
@@ -421,6 +434,7 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
                                             : "the grader failed: " + last_line(g.log);
         }
         ++p.done;
+        p.finished_seconds += seconds;
         if (!problem.empty()) {
             ++p.errors;
             roster_record err;
@@ -458,8 +472,6 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
             running.push_back(g);
             ++next;
         }
-        p.running = running.size();
-        p.draw();
         bool reaped = false;
         for (auto it = running.begin(); it != running.end();) {
             int status = 0;
@@ -476,6 +488,10 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
             }
             ++it;
         }
+        p.running_ages.clear();
+        for (const running_grade& g : running)
+            p.running_ages.push_back(std::chrono::duration<double>(clock_type::now() - g.started).count());
+        p.draw();
         if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
     p.finish();
