@@ -85,8 +85,10 @@ score() { jq -r "$1" "$tmp/$2.json"; }
 
 grade reference "$src/reference/$stage" || bad "run_autograder failed on the reference: $(tail -n 5 "$tmp/reference.log")"
 if check reference bubblewrap; then
-  got=$(score .score reference) max=$(score '[.tests[].max_score] | add' reference)
-  jq -e '.score == ([.tests[].max_score] | add) and .score == .extra_data.max_score and .score > 0' "$tmp/reference.json" >/dev/null &&
+  got=$(score .score reference) max=$(score '[.tests[].max_score] | add | . * 10000 | round / 10000' reference)
+  # The items' maxima are rounded to 1e-4 each: their sum is the total to within that.
+  jq -e '(.score - ([.tests[].max_score] | add)) as $d | $d < 0.001 and $d > -0.001 and
+         .score == .extra_data.max_score and .score > 0' "$tmp/reference.json" >/dev/null &&
     say "ok: the reference scores $got of $max" || bad "the reference scores $got of $max"
 fi
 
