@@ -79,7 +79,9 @@ check() {
   if ! jq -e '(.score|type)=="number" and (.output|type)=="string" and (.tests|type)=="array"' "$tmp/$name.json" >/dev/null 2>&1; then
     bad "$name: no valid results.json; run_autograder said:"; tail -n 20 "$tmp/$name.log"; return 1
   fi
-  jq -r .output "$tmp/$name.json" | grep -q "^Sandbox: $word" || bad "$name: output does not say 'Sandbox: $word': $(jq .output "$tmp/$name.json")"
+  if ! jq -r .output "$tmp/$name.json" | grep -q "^Sandbox: $word"; then
+    bad "$name: output does not say 'Sandbox: $word': $(jq .output "$tmp/$name.json")"; return 1
+  fi
 }
 score() { jq -r "$1" "$tmp/$2.json"; }
 
