@@ -114,10 +114,18 @@ if check bug bubblewrap && [ -n "$range" ]; then
     bad "$bug scores $(score .score bug) of $(score .extra_data.max_score bug), outside [$lo, $hi] %"
 fi
 
-# The grader itself fails: not the student's fault, no score earned, exit non-zero.
-printf '#!/bin/sh\necho "grader grade: the disk is full (a test of run_autograder)" >&2\nexit 1\n' >"$tmp/broken-grader"
+# The grader itself fails: not the student's fault, no score earned, exit non-zero. The
+# submission is one zip, which run_autograder hands to the grader as the archive it is.
+cat >"$tmp/broken-grader" <<EOF
+#!/bin/sh
+printf '%s\n' "\$@" >"$tmp/broken-args"
+echo "grader grade: the disk is full (a test of run_autograder)" >&2
+exit 1
+EOF
 chmod +x "$tmp/broken-grader"
-if grade broken "$src/reference/$stage" VL_AUTOGRADER_GRADER="$tmp/broken-grader"; then
+mkdir -p "$tmp/zipped"
+(cd "$src/reference/$stage" && zip -q -r "$tmp/zipped/submission.zip" .)
+if grade broken "$tmp/zipped" VL_AUTOGRADER_GRADER="$tmp/broken-grader"; then
   bad "run_autograder exited 0 when the grader failed"
 elif ! jq -e '.score == 0 and .extra_data.autograder_failed == true and ([.tests[].score] | add) == 0 and
               (.output | test("no fault of yours")) and (.output | test("the disk is full"))' "$tmp/broken.json" >/dev/null 2>&1; then
@@ -125,6 +133,8 @@ elif ! jq -e '.score == 0 and .extra_data.autograder_failed == true and ([.tests
 else
   say "ok: a failed grader exits non-zero and results.json says the autograder failed, with its message"
 fi
+[ "$(sed -n 3p "$tmp/broken-args" 2>/dev/null)" = "$ag/submission/submission.zip" ] ||
+  bad "a submission of one zip was not graded as that zip: the grader got $(tr '\n' ' ' <"$tmp/broken-args" 2>/dev/null)"
 
 say "wall time: $((SECONDS - start)) s"
 [ $fail -eq 0 ] && echo "the Gradescope bundle: all as expected"
