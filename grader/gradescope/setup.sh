@@ -36,8 +36,16 @@ echo "setup.sh: building the autograder for $assignment in $source_dir/build/gra
 cmake_version=$(cmake --version 2>/dev/null | sed -n 's/^cmake version \([0-9][0-9.]*\).*/\1/p')
 if [ -z "$cmake_version" ] || ! printf '3.25\n%s\n' "$cmake_version" | sort -V -C; then
   fail "this image's CMake is ${cmake_version:-missing}; the project needs CMake 3.25 or newer" \
-       "(CMakePresets.json version 6): choose a newer base image"
+       "(CMakePresets.json version 6): choose a newer base image, or install a newer CMake in setup.sh before" \
+       "tools/setup runs"
 fi
+catch2_version=$(dpkg-query -W -f='${Version}' catch2 2>/dev/null)
+case "$catch2_version" in
+  2.*) ;;
+  *) fail "this image's Catch2 (the package catch2) is ${catch2_version:-missing}; the tests need Catch2 2.13 or a" \
+          "later 2.x (find_package(Catch2 2.13) in CMakeLists.txt): choose a base image that packages Catch2 2, or" \
+          "install Catch2 2 in setup.sh before tools/setup runs" ;;
+esac
 
 # The build, from scratch the first time (CMake and Ninja make it incremental afterwards).
 start=$SECONDS
