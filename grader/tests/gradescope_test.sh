@@ -9,8 +9,9 @@
 #   reference (full marks), the stubs (0, in the weaker sandbox: VL_GRADER_BWRAP names no
 #   bubblewrap) and a planted bug (its expected.toml's score range), and each results.json
 #   names its sandbox in "output";
-# - a grader that fails gives a results.json that says the autograder failed, scores
-#   nothing, and run_autograder exits non-zero.
+# - a grader that fails (a stand-in that exits 1; the real one refusing to grade without
+#   bubblewrap under VL_AUTOGRADER_SANDBOX=bubblewrap) gives a results.json that says the
+#   autograder failed, scores nothing, and run_autograder exits non-zero.
 # The build reuses ccache across runs of this test (CCACHE_BASEDIR: the tree's path
 # changes every run); without a cache it is a first build of the preset grader's target.
 set -uo pipefail
@@ -132,6 +133,15 @@ elif ! jq -e '.score == 0 and .extra_data.autograder_failed == true and ([.tests
   bad "a failed grader: results.json does not say so: $(cat "$tmp/broken.json" 2>/dev/null)"
 else
   say "ok: a failed grader exits non-zero and results.json says the autograder failed, with its message"
+fi
+# The real grader refusing: VL_AUTOGRADER_SANDBOX=bubblewrap on a machine without bubblewrap.
+if grade refused "$src/reference/$stage" VL_GRADER_BWRAP=/nonexistent/bwrap VL_AUTOGRADER_SANDBOX=bubblewrap; then
+  bad "run_autograder graded without bubblewrap although VL_AUTOGRADER_SANDBOX=bubblewrap"
+elif ! jq -e '.score == 0 and .extra_data.autograder_failed == true and (.output | test("no fault of yours")) and
+              (.output | test("bubblewrap"))' "$tmp/refused.json" >/dev/null 2>&1; then
+  bad "the grader's refusal: results.json does not carry it: $(cat "$tmp/refused.json" 2>/dev/null)"
+else
+  say "ok: the grader's own refusal (no bubblewrap) reaches results.json as the autograder's failure"
 fi
 [ "$(sed -n 3p "$tmp/broken-args" 2>/dev/null)" = "$ag/submission/submission.zip" ] ||
   bad "a submission of one zip was not graded as that zip: the grader got $(tr '\n' ' ' <"$tmp/broken-args" 2>/dev/null)"
