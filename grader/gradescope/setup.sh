@@ -27,9 +27,12 @@ number=$(sed -n 's/^number=//p' "$conf")
 [ -n "$assignment" ] && [ -n "$number" ] ||
   fail "$conf names no assignment (lines assignment=NN-name and number=NN): make the bundle again"
 echo "setup.sh: building the autograder for $assignment in $source_dir/build/grader"
+# An unpacker that drops the modes must not stop the grading step.
+chmod +x "$source_dir/run_autograder" 2>/dev/null
+if [ -f "$source_dir/../run_autograder" ]; then chmod +x "$source_dir/../run_autograder" 2>/dev/null; fi
 
 # Packages first, on their own, so that a missing one is named before any build starts.
-"$source_dir/tools/setup" --no-build ||
+bash "$source_dir/tools/setup" --no-build ||
   fail "tools/setup could not install the packages (its messages are above): choose a base image whose" \
        "package manager has them (the Ubuntu image Gradescope offers, as grader/README.md says), or install them" \
        "in setup.sh before tools/setup runs"
@@ -49,7 +52,7 @@ esac
 
 # The build, from scratch the first time (CMake and Ninja make it incremental afterwards).
 start=$SECONDS
-"$source_dir/tools/setup" --preset grader --target "vl_grader_parts_$number" ||
+bash "$source_dir/tools/setup" --preset grader --target "vl_grader_parts_$number" ||
   fail "building the grader for $assignment failed (the compiler's or CMake's messages are above). Build the" \
        "same commit on a Debian 12 machine with tools/setup --preset grader and check a grade with" \
        "grader/run grade $assignment reference/$assignment, then make the bundle again"
