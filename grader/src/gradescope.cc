@@ -235,8 +235,8 @@ gradescope_bundle write_gradescope_bundle(const installation& in, const stage_in
     const run_result r = run_tool(argv, staging.path, 600);
     if (!r.succeeded()) {
         fs::remove(partial, ec);
-        throw grader_error("zip could not write " + bundle.zip.string() + " (" + r.describe(600) +
-                           "): " + r.output_head(1000));
+        throw grader_error("zip could not write " + bundle.zip.string() + " (" + r.describe(600) + "): " +
+                           r.output_head(1000) + " (is there room in " + out_dir.string() + "?)");
     }
     fs::rename(partial, bundle.zip, ec);
     if (ec) {
