@@ -23,6 +23,7 @@
 
 #include "export_kit.hh"
 #include "grade.hh"
+#include "gradescope.hh"
 #include "image_compare.hh"
 #include "install.hh"
 #include "report_html.hh"
@@ -525,6 +526,13 @@ int export_kit_command(const installation& in, const arguments& args) {
     return 0;
 }
 
+/// `gradescope ASSIGNMENT OUT.zip`: the Gradescope bundle (gradescope.hh).
+int gradescope_command(const installation& in, const arguments& args) {
+    expect_count(args, 2);
+    std::cout << vl::grader::write_gradescope_bundle(in, in.find_stage(args[0]), args[1]).summary();
+    return 0;
+}
+
 int list_command(const installation& in, const arguments& args) {
     expect_count(args, 0);
     for (const auto& [name, stage] : in.stages)
@@ -656,6 +664,9 @@ const std::vector<command>& commands() {
          roster_collect_command},
         {"export-kit", "export-kit DIR", "write the student kit to DIR and DIR.tar.gz (no reference, no hidden tests)",
          export_kit_command},
+        {"gradescope", "gradescope ASSIGNMENT OUT.zip",
+         "write a Gradescope autograder bundle that grades ASSIGNMENT (setup.sh builds it, run_autograder grades)",
+         gradescope_command},
         {"list", "list", "the assignments this build can grade", list_command},
         {"calibrate", "calibrate CASE_DIR [--out DIR] [--no-policy]",
          "grade one calibration or attack case (grader/tests/submissions/NN-name/CASE, grader/tests/adversarial/...) "
