@@ -1,5 +1,6 @@
 #include "catch_runner.hh"
 
+#include <algorithm>
 #include <pugixml.hpp>
 
 #include "install.hh"
@@ -94,6 +95,12 @@ const char* to_string(test_outcome::status s) {
 }
 
 bool is_public_test_file(const std::string& file) { return file.find("/assignments/") != std::string::npos; }
+
+const test_case_info& named_test(const std::vector<test_case_info>& tests, const std::string& name) {
+    const auto t = std::find_if(tests.begin(), tests.end(), [&](const test_case_info& x) { return x.name == name; });
+    if (t == tests.end()) throw grader_error("the rubric names the hidden test '" + name + "', which does not exist");
+    return *t;
+}
 
 std::string exact_test_spec(const std::string& name) {
     std::string spec;

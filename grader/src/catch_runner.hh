@@ -53,6 +53,10 @@ test_outcome run_test_case(const std::filesystem::path& program, const test_case
 /// tests, which the student has in their tests/ folder.
 bool is_public_test_file(const std::string& file);
 
+/// The test named `name` among `tests`; throws grader_error when there is none (the
+/// rubric names a test the hidden tests do not have).
+const test_case_info& named_test(const std::vector<test_case_info>& tests, const std::string& name);
+
 /// A Catch2 test spec that matches exactly `name` (its special characters escaped).
 std::string exact_test_spec(const std::string& name);
 

@@ -90,10 +90,6 @@ std::string chart_stem(const std::string& test) {
     return out.substr(0, 80);
 }
 
-const test_case_info& named_test(const std::vector<test_case_info>& tests, const std::string& name) {
-    return *std::find_if(tests.begin(), tests.end(), [&](const test_case_info& t) { return t.name == name; });
-}
-
 }  // namespace
 
 graded_submission grade(const installation& in, const stage_info& stage, const fs::path& submission,

@@ -198,8 +198,10 @@ int roster_command(const installation& in, arguments args) {
         if (o.shard >= o.shards) throw usage_error{"--shard " + shard + ": K must be below N (K counts from 0)"};
     }
     const fs::path dir = fs::absolute(args[1]).lexically_normal();
-    if (out.empty()) out = default_out(in, stage.name, dir.string()).parent_path() /
-                           ("roster-" + default_out(in, stage.name, dir.string()).filename().string());
+    if (out.empty()) {
+        const fs::path one = default_out(in, stage.name, dir.string());
+        out = (one.parent_path() / ("roster-" + one.filename().string())).string();
+    }
     o.out = fs::absolute(out).lexically_normal();
     o.progress_bar = isatty(2) != 0;
     o.grader_program = own_program();

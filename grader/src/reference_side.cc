@@ -68,12 +68,6 @@ bool from_json(const json& j, reference_side& s) {
     return true;
 }
 
-const test_case_info& named(const std::vector<test_case_info>& tests, const std::string& name) {
-    const auto t = std::find_if(tests.begin(), tests.end(), [&](const test_case_info& x) { return x.name == name; });
-    if (t == tests.end()) throw grader_error("the rubric names the hidden test '" + name + "', which does not exist");
-    return *t;
-}
-
 /// The points of a [sweep] or [chart] test as the reference measures them. The reference
 /// must run it cleanly: otherwise the test or the rubric is wrong, and no student may lose
 /// points for it.
@@ -105,8 +99,8 @@ reference_side reference_side_of(const installation& in, const stage_info& stage
     s.tests = list_trusted_tests(stage.trusted_tests, work / "trusted", caps);
     check_rubric(r, s.tests);
     if (!stage.tests_on_stubs.empty()) s.kit_passes = tests_passing_on_stubs(stage.tests_on_stubs, work / "stubs", caps);
-    for (const rubric_sweep& w : r.sweeps) s.points[w.test] = measure(stage, named(s.tests, w.test), r, caps);
-    for (const rubric_chart& c : r.charts) s.points[c.test] = measure(stage, named(s.tests, c.test), r, caps);
+    for (const rubric_sweep& w : r.sweeps) s.points[w.test] = measure(stage, named_test(s.tests, w.test), r, caps);
+    for (const rubric_chart& c : r.charts) s.points[c.test] = measure(stage, named_test(s.tests, c.test), r, caps);
     // Keeping it only saves time: a build folder this user cannot write costs nothing else.
     std::error_code ec;
     fs::create_directories(cache.parent_path(), ec);

@@ -43,18 +43,9 @@ std::string archive_suffix(const std::string& name) {
     return {};
 }
 
-struct fnv {
-    std::uint64_t h = 14695981039346656037ull;
-    void add(const void* data, std::size_t n) {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t k = 0; k < n; ++k) h = (h ^ p[k]) * 1099511628211ull;
-    }
-    void add(const std::string& s) { add(s.data(), s.size() + 1); }  // with its terminating zero
-};
-
 /// Adds a regular file's size and bytes, read without following a link and without
 /// blocking on a pipe planted where a file was.
-void hash_file(fnv& h, const fs::path& file) {
+void hash_file(fnv1a64& h, const fs::path& file) {
     const int fd = open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
     struct stat st {};
     if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
@@ -72,8 +63,8 @@ void hash_file(fnv& h, const fs::path& file) {
 /// What grades a submission of `stage`: the grader program, the trusted programs and
 /// libraries, and every file of grader/hidden/NN-name (rubric, tests, scenes). A record
 /// made with another is graded again: a CSV never mixes two rubrics.
-std::uint64_t setup_hash(const installation& in, const stage_info& stage, const fs::path& grader_program) {
-    fnv h;
+std::string setup_hash(const installation& in, const stage_info& stage, const fs::path& grader_program) {
+    fnv1a64 h;
     std::vector<fs::path> files = {grader_program, stage.trusted_tests, stage.tests_on_stubs, stage.reference_library,
                                    stage.oracle_library, in.reference_renderer};
     std::error_code ec;
@@ -88,13 +79,7 @@ std::uint64_t setup_hash(const installation& in, const stage_info& stage, const 
         h.add(f.string());
         hash_file(h, f);
     }
-    return h.h;
-}
-
-std::string hex(std::uint64_t h) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-    return text;
+    return h.hex();
 }
 
 // --- The scheduler's state and its screen -------------------------------------------
@@ -288,12 +273,12 @@ std::vector<roster_entry> list_submissions(const fs::path& dir, std::vector<std:
 }
 
 std::string content_hash(const fs::path& submission) {
-    fnv h;
+    fnv1a64 h;
     std::error_code ec;
     if (!fs::is_directory(fs::symlink_status(submission, ec))) {  // an archive
         h.add("archive");
         hash_file(h, submission);
-        return hex(h.h);
+        return h.hex();
     }
     std::vector<std::pair<std::string, fs::file_status>> files;
     for (auto it = fs::recursive_directory_iterator(submission, fs::directory_options::skip_permission_denied, ec);
@@ -313,7 +298,7 @@ std::string content_hash(const fs::path& submission) {
             h.add(fs::is_directory(status) ? "folder" : "other");
         }
     }
-    return hex(h.h);
+    return h.hex();
 }
 
 int run_roster(const installation& in, const stage_info& stage, const fs::path& dir, const roster_options& o) {
@@ -351,7 +336,7 @@ int run_roster(const installation& in, const stage_info& stage, const fs::path& 
     std::vector<roster_entry> mine;
     for (std::size_t k = 0; k < all.size(); ++k)
         if (static_cast<int>(k % static_cast<std::size_t>(o.shards)) == o.shard) mine.push_back(all[k]);
-    const std::string setup = hex(setup_hash(in, stage, o.grader_program));
+    const std::string setup = setup_hash(in, stage, o.grader_program);
     std::vector<std::pair<roster_entry, std::string>> todo;
     std::size_t unchanged = 0, other_setup = 0;
     for (const roster_entry& e : mine) {

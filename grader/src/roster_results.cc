@@ -24,12 +24,6 @@ constexpr std::size_t record_cap = std::size_t{1} << 20;
 /// A grade's results.json: every test's message, each capped by the grader.
 constexpr std::size_t results_cap = std::size_t{64} << 20;
 
-std::string hex64(std::uint64_t h) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-    return text;
-}
-
 /// A number as the CSV shows it: at most 4 decimals, no trailing zeros.
 std::string number(double x) {
     char text[64];
@@ -102,11 +96,17 @@ roster_record from_json(const json& j) {
 
 }  // namespace
 
+std::string fnv1a64::hex() const {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+    return text;
+}
+
 std::string roster_file_stem(const std::string& name) {
     if (name.size() <= 200) return name;
-    std::uint64_t h = 14695981039346656037ull;
-    for (const unsigned char c : name) h = (h ^ c) * 1099511628211ull;
-    return name.substr(0, 180) + "~" + hex64(h);
+    fnv1a64 h;
+    h.add(name.data(), name.size());
+    return name.substr(0, 180) + "~" + h.hex();
 }
 
 roster_record record_from_results(const fs::path& results_json, const std::string& student, const std::string& submission,

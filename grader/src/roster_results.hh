@@ -3,6 +3,7 @@
 /// \brief A roster's records (OUT/results/NAME.json, roster.hh) and what is made of them:
 /// the summary CSV and the leaderboard. Shared by `roster`, which writes records, and
 /// `roster-collect`, which only reads them (after a cluster's array tasks).
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -28,6 +29,18 @@ struct roster_record {
     std::vector<category> categories;
     int passed = 0, failed = 0, crashed = 0, timed_out = 0, refused = 0, not_run = 0;
     std::vector<leaderboard_value> leaderboard;
+};
+
+/// \brief FNV-1a, 64 bits: the roster's hash of contents, of the grading setup and of long names.
+struct fnv1a64 {
+    std::uint64_t h = 14695981039346656037ull;
+    void add(const void* data, std::size_t n) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t k = 0; k < n; ++k) h = (h ^ p[k]) * 1099511628211ull;
+    }
+    void add(const std::string& s) { add(s.data(), s.size() + 1); }  ///< with its terminating zero
+    /// 16 hex digits.
+    std::string hex() const;
 };
 
 /// The file name for student `name` in results/ and grades/: the name itself, or for a
