@@ -11,6 +11,7 @@
 
 #include "vl/camera.hh"
 #include "vl/error.hh"
+#include "vl/random.hh"
 
 namespace vl {
 
@@ -18,10 +19,7 @@ std::uint64_t pixel_seed(int x, int y, std::uint64_t image_seed) {
     std::uint64_t z = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) ^
                       static_cast<std::uint32_t>(y);
     // Seed 0 leaves z as it is: the default image does not change.
-    z += 0x9e3779b97f4a7c15ull * (image_seed + 1);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
+    return splitmix64_mix(z + 0x9e3779b97f4a7c15ull * (image_seed + 1));
 }
 
 namespace {

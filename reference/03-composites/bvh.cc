@@ -1,9 +1,17 @@
 // Reference: the bounding volume hierarchy (see assignments/03-composites/stage_03.hh).
+//
+// Built with the surface area heuristic over 32 bins of the children's centres (I. Wald,
+// "On fast construction of SAH-based bounding volume hierarchies", IEEE Symposium on
+// Interactive Ray Tracing 2007); stored flat, depth first, 32 bytes a node, with float
+// boxes rounded outwards; walked near-first with a slab test that takes the ray's
+// reciprocal direction once per ray (A. Williams, S. Barrus, R. K. Morley and P. Shirley,
+// "An efficient and robust ray-box intersection algorithm", JGT 10(1), 2005).
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <mutex>
 #include <ostream>
 #include <vector>
@@ -12,32 +20,79 @@
 #include "stage_03.hh"
 #include "vl/bounds.hh"
 #include "vl/scene_reader.hh"
+#include "vl/stats.hh"
 
 namespace vl::stage03 {
 
 namespace {
 
-constexpr double no_limit = 1e300;   // hits_box's t_max when nothing has been hit yet
 constexpr double traversal_cost = 1;  // a node's two box tests, in units of one child test
-constexpr int max_tree_depth = 60;    // deeper than this, split by count (always balanced)
+constexpr int max_bins = 32;          // SAH bins per axis (Wald 2007 finds 16 to 32 enough)
+constexpr int max_sah_depth = 60;     // deeper than this, split by count (always balanced)
+// The deepest tree: 60 SAH levels, then halving at most 32 times (2^32 children).
+constexpr int max_tree_depth = max_sah_depth + 32;
 
+/// A box in double precision, as the children report it (and the root's exact box). Its
+/// corners are never NaN (insert() refuses a child without a finite box), so std::min and
+/// std::max serve, which compile to one instruction where std::fmin is a library call.
 struct box3 {
-    point lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     void grow(const box3& b) {
-        lo = point(std::fmin(lo.x, b.lo.x), std::fmin(lo.y, b.lo.y), std::fmin(lo.z, b.lo.z));
-        hi = point(std::fmax(hi.x, b.hi.x), std::fmax(hi.y, b.hi.y), std::fmax(hi.z, b.hi.z));
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], b.lo[k]);
+            hi[k] = std::max(hi[k], b.hi[k]);
+        }
     }
-    /// Half the surface area (the factor 2 cancels in every ratio).
+    void grow(const double p[3]) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    }
+    /// Half the surface area (the factor 2 cancels in every ratio); 0 for an empty box.
     double half_area() const {
-        const vector e = hi - lo;
-        return e.x * e.y + e.y * e.z + e.z * e.x;
+        if (!(lo[0] <= hi[0])) return 0;
+        const double x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
+        return x * y + y * z + z * x;
     }
 };
 
-double axis_of(const point& p, int axis) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; }
+/// The float nearest `x` on the side away from the box's inside, so that a float box
+/// always contains the double box it stands for (the round trip through float would
+/// otherwise move a face inwards by up to half a float step).
+float round_down(double x) {
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+}
+float round_up(double x) {
+    const auto f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+}
 
-/// \brief A binary tree of boxes over the children, built with the surface area
-/// heuristic on the first ray after a change, walked near-first.
+/// A ray prepared for many slab tests: its origin, its reciprocal direction and, per axis,
+/// which face of a box it meets first (1 when the direction is negative, so the high face).
+/// A zero direction component has the reciprocal +-infinity, which the slab test handles.
+struct slab_ray {
+    double origin[3], inverse[3];
+    int first_face[3];
+    explicit slab_ray(const ray& r) {
+        const point& o = r.origin();
+        const vector& d = r.direction();
+        const double dir[3] = {d.x, d.y, d.z};
+        origin[0] = o.x, origin[1] = o.y, origin[2] = o.z;
+        for (int k = 0; k < 3; ++k) {
+            inverse[k] = 1.0 / dir[k];
+            first_face[k] = std::signbit(dir[k]) ? 1 : 0;
+        }
+    }
+};
+
+// Each slab's far distance is stretched by this factor, covering the rounding of the two
+// operations that compute it and of the near distance (M. Pharr, W. Jakob and
+// G. Humphreys, *Physically Based Rendering*, 4th ed., 6.8.2: 1 + 2 gamma(3)).
+constexpr double far_stretch = 1 + 2 * (3 * 0x1p-53 / (1 - 3 * 0x1p-53));
+
+/// \brief The tree over the children, built on the first ray after a change.
 class bvh final : public rtab_composite {
 public:
     explicit bvh(int leaf_size) : leaf_size_(leaf_size) {}
@@ -62,11 +117,11 @@ public:
 
     point min_point() const override {
         ensure_built();
-        return nodes_.empty() ? NaN_point : nodes_.front().bounds.lo;
+        return nodes_.empty() ? NaN_point : point(root_.lo[0], root_.lo[1], root_.lo[2]);
     }
     point max_point() const override {
         ensure_built();
-        return nodes_.empty() ? NaN_point : nodes_.front().bounds.hi;
+        return nodes_.empty() ? NaN_point : point(root_.hi[0], root_.hi[1], root_.hi[2]);
     }
 
     void read(scene_reader& in) override {
@@ -84,15 +139,18 @@ public:
     }
 
 private:
+    /// One node in 32 bytes: its box, and where its children are.
     struct node {
-        box3 bounds;
-        std::uint32_t first = 0;  // a leaf: its children are order_[first, first + count)
-        std::uint32_t count = 0;  // 0 for an inner node
-        std::uint32_t right = 0;  // an inner node: its left child is the next node, this its right
+        float bounds[2][3];       // [0] the low corner, [1] the high one, rounded outwards
+        std::uint32_t index = 0;  // a leaf: its first child in order_; an inner node: its right child
+        std::uint32_t count = 0;  // a leaf: how many children it holds; 0 for an inner node,
+                                  // whose left child is the node after it
     };
+    static_assert(sizeof(node) == 32);
+
     struct item {
         box3 bounds;
-        point centre;
+        double centre[3];
         const rtab_component* object;
     };
 
@@ -107,132 +165,186 @@ private:
     void build() const {
         nodes_.clear();
         order_.clear();
+        root_ = {};
         if (children_.empty()) return;
         std::vector<item> items;
         items.reserve(children_.size());
         for (const auto& c : children_) {
-            item it{{c->min_point(), c->max_point()}, {}, c.get()};
-            it.centre = point((it.bounds.lo.x + it.bounds.hi.x) / 2, (it.bounds.lo.y + it.bounds.hi.y) / 2,
-                              (it.bounds.lo.z + it.bounds.hi.z) / 2);
+            const point lo = c->min_point(), hi = c->max_point();
+            item it{{{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}}, {}, c.get()};
+            for (int k = 0; k < 3; ++k) it.centre[k] = (it.bounds.lo[k] + it.bounds.hi[k]) / 2;
             items.push_back(it);
         }
         nodes_.reserve(2 * items.size());
-        std::vector<double> right_area(items.size() + 1);
-        build_node(items, 0, items.size(), 0, right_area);
+        build_node(items, 0, items.size(), 0);
         order_.reserve(items.size());
         for (const item& it : items) order_.push_back(it.object);
     }
 
     /// Builds the subtree of items[begin, end) at nodes_.back() + 1; returns its index.
-    std::uint32_t build_node(std::vector<item>& items, std::size_t begin, std::size_t end, int depth,
-                             std::vector<double>& right_area) const {
+    std::uint32_t build_node(std::vector<item>& items, std::size_t begin, std::size_t end, int depth) const {
         const auto index = static_cast<std::uint32_t>(nodes_.size());
         nodes_.emplace_back();
         box3 bounds, centres;
         for (std::size_t i = begin; i < end; ++i) {
             bounds.grow(items[i].bounds);
-            centres.grow({items[i].centre, items[i].centre});
+            centres.grow(items[i].centre);
         }
-        nodes_[index].bounds = bounds;
+        for (int k = 0; k < 3; ++k) {
+            nodes_[index].bounds[0][k] = round_down(bounds.lo[k]);
+            nodes_[index].bounds[1][k] = round_up(bounds.hi[k]);
+        }
+        if (index == 0) root_ = bounds;  // the tree's box, exactly, for min_point and the first test
         const std::size_t n = end - begin;
         auto make_leaf = [&] {
-            nodes_[index].first = static_cast<std::uint32_t>(begin);
+            nodes_[index].index = static_cast<std::uint32_t>(begin);
             nodes_[index].count = static_cast<std::uint32_t>(n);
             return index;
         };
         if (n == 1) return make_leaf();
 
-        // The cheapest split by the surface area heuristic, over the three axes.
-        const double area = bounds.half_area();
-        double best_cost = INFINITY;
-        int best_axis = -1;
-        std::size_t best_split = 0;
-        for (int axis = 0; axis < 3 && depth < max_tree_depth; ++axis) {
-            if (axis_of(centres.lo, axis) == axis_of(centres.hi, axis)) continue;  // all centres alike here
-            sort_along(items, begin, end, axis);
-            box3 right;
-            for (std::size_t i = n; i > 0; --i) {
-                right.grow(items[begin + i - 1].bounds);
-                right_area[i - 1] = right.half_area();
-            }
-            box3 left;
-            for (std::size_t i = 1; i < n; ++i) {  // left: the first i items
-                left.grow(items[begin + i - 1].bounds);
-                const double weighted = left.half_area() * static_cast<double>(i) +
-                                        right_area[i] * static_cast<double>(n - i);
-                const double cost = traversal_cost + (area > 0 ? weighted / area : static_cast<double>(n));
-                const bool nearer_middle = cost == best_cost && best_axis == axis &&
-                                           std::abs(static_cast<double>(i) - static_cast<double>(n) / 2) <
-                                               std::abs(static_cast<double>(best_split) - static_cast<double>(n) / 2);
-                if (cost < best_cost || nearer_middle) {
-                    best_cost = cost;
-                    best_axis = axis;
-                    best_split = i;
-                }
-            }
-        }
-        if (n <= static_cast<std::size_t>(leaf_size_) && !(best_cost < static_cast<double>(n))) return make_leaf();
-        if (best_axis < 0) {
-            best_split = n / 2;  // every centre alike, or too deep: split by count
+        const split best = depth < max_sah_depth ? cheapest_split(items, begin, end, bounds, centres) : split{};
+        if (n <= static_cast<std::size_t>(leaf_size_) && !(best.cost < static_cast<double>(n))) return make_leaf();
+        std::size_t middle;
+        if (best.axis < 0) {  // every centre alike, or too deep: split by count
+            middle = begin + n / 2;
         } else {
-            sort_along(items, begin, end, best_axis);
+            const int axis = best.axis;
+            const int bins = bins_for(n);
+            const double lo = centres.lo[axis], scale = bins / (centres.hi[axis] - centres.lo[axis]);
+            const auto right_of_split = std::partition(
+                items.begin() + static_cast<std::ptrdiff_t>(begin), items.begin() + static_cast<std::ptrdiff_t>(end),
+                [&](const item& it) { return bin_of(it.centre[axis], lo, scale, bins) < best.bin; });
+            middle = static_cast<std::size_t>(right_of_split - items.begin());
         }
-        build_node(items, begin, begin + best_split, depth + 1, right_area);
-        nodes_[index].right = build_node(items, begin + best_split, end, depth + 1, right_area);
+        build_node(items, begin, middle, depth + 1);
+        nodes_[index].index = build_node(items, middle, end, depth + 1);
         return index;
     }
 
-    static void sort_along(std::vector<item>& items, std::size_t begin, std::size_t end, int axis) {
-        std::sort(items.begin() + static_cast<std::ptrdiff_t>(begin), items.begin() + static_cast<std::ptrdiff_t>(end),
-                  [axis](const item& a, const item& b) { return axis_of(a.centre, axis) < axis_of(b.centre, axis); });
+    struct split {
+        double cost = INFINITY;
+        int axis = -1;  // -1: no split found
+        int bin = 0;    // the left side takes the bins below this one
+    };
+
+    /// As many bins as children, up to max_bins: a few children need no more.
+    static int bins_for(std::size_t n) { return static_cast<int>(std::min<std::size_t>(n, max_bins)); }
+    static int bin_of(double centre, double lo, double scale, int bins) {
+        return std::min(bins - 1, static_cast<int>((centre - lo) * scale));
+    }
+
+    /// The split between two bins of centres that the surface area heuristic finds
+    /// cheapest, over the three axes: traversal_cost + (A_left N_left + A_right N_right) / A.
+    static split cheapest_split(const std::vector<item>& items, std::size_t begin, std::size_t end,
+                                const box3& bounds, const box3& centres) {
+        const double area = bounds.half_area();
+        const auto n = static_cast<double>(end - begin);
+        const int bins = bins_for(end - begin);
+        split best;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double extent = centres.hi[axis] - centres.lo[axis];
+            if (!(extent > 0)) continue;  // all centres alike along this axis
+            const double lo = centres.lo[axis], scale = bins / extent;
+            std::array<box3, max_bins> bin_bounds;
+            std::array<std::size_t, max_bins> bin_items{};
+            for (std::size_t i = begin; i < end; ++i) {
+                const int b = bin_of(items[i].centre[axis], lo, scale, bins);
+                bin_bounds[static_cast<std::size_t>(b)].grow(items[i].bounds);
+                ++bin_items[static_cast<std::size_t>(b)];
+            }
+            // right_cost[b]: A N of bins b and above.
+            std::array<double, max_bins> right_cost{};
+            box3 right;
+            std::size_t right_items = 0;
+            for (int b = bins - 1; b > 0; --b) {
+                right.grow(bin_bounds[static_cast<std::size_t>(b)]);
+                right_items += bin_items[static_cast<std::size_t>(b)];
+                right_cost[static_cast<std::size_t>(b)] = right.half_area() * static_cast<double>(right_items);
+            }
+            box3 left;
+            std::size_t left_items = 0;
+            for (int b = 1; b < bins; ++b) {  // the left side: bins below b
+                left.grow(bin_bounds[static_cast<std::size_t>(b - 1)]);
+                left_items += bin_items[static_cast<std::size_t>(b - 1)];
+                if (left_items == 0 || left_items == end - begin) continue;  // one side empty: no split
+                const double weighted = left.half_area() * static_cast<double>(left_items) + right_cost[static_cast<std::size_t>(b)];
+                const double cost = traversal_cost + (area > 0 ? weighted / area : n);
+                if (cost < best.cost) best = {cost, axis, b};
+            }
+        }
+        return best;
+    }
+
+    /// The slab test of node `nd`'s box against `sr` for t in [0, t_max]: true, with where
+    /// the ray enters the box in `t_near`, when the ray passes through it. Branch-free: the
+    /// face met first comes from the direction's sign, and the IEEE rules do the rest. A
+    /// zero direction component gives distances of +-infinity (inside the slab or never);
+    /// the NaN of 0 * infinity, for an origin on a face of such a slab, is dropped by
+    /// std::max and std::min as their second argument, so that slab limits nothing.
+    static bool slabs(const node& nd, const slab_ray& sr, double t_max, double& t_near) {
+        double t0 = 0, t1 = t_max;
+        for (int k = 0; k < 3; ++k) {
+            const double near = (nd.bounds[sr.first_face[k]][k] - sr.origin[k]) * sr.inverse[k];
+            const double far = (nd.bounds[1 - sr.first_face[k]][k] - sr.origin[k]) * sr.inverse[k] * far_stretch;
+            t0 = std::max(t0, near);
+            t1 = std::min(t1, far);
+        }
+        t_near = t0;
+        return t0 <= t1;
     }
 
     intersection find_intersection(const ray& r) const override {
         ensure_built();
         if (nodes_.empty()) return intersection::none();
+        const point lo(root_.lo[0], root_.lo[1], root_.lo[2]), hi(root_.hi[0], root_.hi[1], root_.hi[2]);
         ray_span span;
-        if (!hits_box(r, nodes_.front().bounds.lo, nodes_.front().bounds.hi, no_limit, &span))
-            return intersection::none();
+        if (!hits_box(r, lo, hi, INFINITY, &span)) return intersection::none();  // counts its test
+        const slab_ray sr(r);
         struct entry {
             std::uint32_t node;
             double t_near;
         };
-        std::array<entry, 2 * max_tree_depth + 8> stack;
+        std::array<entry, max_tree_depth + 2> stack;  // near-first keeps at most one entry per level
         std::size_t top = 0;
         stack[top++] = {0, span.t_near};
+        std::uint64_t box_tests = 0;
         intersection best = intersection::none();
         while (top > 0) {
             const entry e = stack[--top];
             if (best.hit() && e.t_near > best.t) continue;  // its box starts beyond the best hit
             const node& nd = nodes_[e.node];
             if (nd.count > 0) {
-                for (std::uint32_t k = nd.first; k < nd.first + nd.count; ++k) {
+                for (std::uint32_t k = nd.index; k < nd.index + nd.count; ++k) {
                     const intersection i = order_[k]->intersect(r);
                     if (i.nearer_than(best)) best = i;
                 }
                 continue;
             }
-            const double t_max = best.hit() ? best.t : no_limit;
-            const std::uint32_t left = e.node + 1, right = nd.right;
-            ray_span sl, sr;
-            const bool hit_left = hits_box(r, nodes_[left].bounds.lo, nodes_[left].bounds.hi, t_max, &sl);
-            const bool hit_right = hits_box(r, nodes_[right].bounds.lo, nodes_[right].bounds.hi, t_max, &sr);
+            const double t_max = best.hit() ? best.t : INFINITY;
+            const std::uint32_t left = e.node + 1, right = nd.index;
+            double near_left, near_right;
+            const bool hit_left = slabs(nodes_[left], sr, t_max, near_left);
+            const bool hit_right = slabs(nodes_[right], sr, t_max, near_right);
+            box_tests += 2;
             if (hit_left && hit_right) {
-                const bool left_first = sl.t_near <= sr.t_near;
-                stack[top++] = left_first ? entry{right, sr.t_near} : entry{left, sl.t_near};  // the far one waits
-                stack[top++] = left_first ? entry{left, sl.t_near} : entry{right, sr.t_near};
+                const bool left_first = near_left <= near_right;
+                stack[top++] = left_first ? entry{right, near_right} : entry{left, near_left};  // the far one waits
+                stack[top++] = left_first ? entry{left, near_left} : entry{right, near_right};
             } else if (hit_left) {
-                stack[top++] = {left, sl.t_near};
+                stack[top++] = {left, near_left};
             } else if (hit_right) {
-                stack[top++] = {right, sr.t_near};
+                stack[top++] = {right, near_right};
             }
         }
+        count_bounding_volume_tests(box_tests);
         return best.hit() ? best : intersection::composite_only(this);
     }
 
     int leaf_size_;
     mutable std::mutex build_mutex_;
     mutable std::atomic<bool> built_{false};
+    mutable box3 root_;                                 // the root's box, exactly
     mutable std::vector<node> nodes_;                  // the tree, root first (built by ensure_built)
     mutable std::vector<const rtab_component*> order_;  // the children as the leaves hold them
 };

@@ -71,6 +71,11 @@ inline intersection_counts counts() {
     c.bounding_volume_tests = t.bounding_volume;
     return c;
 }
+/// Counts `n` bounding-volume tests in this thread's counters, for a composite that tests
+/// its bounds with its own code instead of vl::hits_box or vl::hits_sphere (the reference
+/// BVH's float boxes): each test must still be counted once.
+inline void count_bounding_volume_tests(std::uint64_t n) { detail::thread_tallies.bounding_volume += n; }
+
 /// Sets this thread's counters to zero (the thesis's `clear_count()`).
 inline void clear_counts() { detail::thread_tallies = {}; }
 
