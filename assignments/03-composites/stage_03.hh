@@ -192,15 +192,17 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 /// and Booth 1990; Wald, "On fast Construction of SAH-based Bounding Volume
 /// Hierarchies", 2007): the expected cost of a split into A and B is proportional to
 /// area(A)·count(A) + area(B)·count(B); sort or bin the children by box centre along
-/// an axis and take the cheapest split. (The reference sweeps every split of the sorted
-/// children on all three axes. Binning, or a split at the median of the longest axis,
-/// also meets the budgets; the budgets, not the method, are graded.) A node of more than `leaf_size` children is always
+/// an axis and take the cheapest split. (The reference puts the centres in 32 bins per
+/// axis and weighs entering a node as its two box tests. A sweep over every split of the
+/// sorted children, or a split at the median of the longest axis, also meets the budgets;
+/// the budgets, not the method, are graded.) A node of more than `leaf_size` children is always
 /// split, one of at most `leaf_size` becomes a leaf unless a split is cheaper. Many children with
 /// the same centre must still give a tree (split them by count), never an endless split.
 ///
 /// **intersect()** tests the root box, then walks the tree **near-first**: at a node whose
-/// box the ray enters, test both children's boxes (vl::hits_box(), with the best hit so
-/// far as `t_max`), visit the nearer one first, and skip a child whose box starts beyond
+/// box the ray enters, test both children's boxes (vl::hits_box(), or a faster test of
+/// your own that counts each box with vl::count_bounding_volume_tests(); the best hit so
+/// far is `t_max`), visit the nearer one first, and skip a child whose box starts beyond
 /// the best hit found so far. A leaf intersects each of its children once. Nothing is
 /// tested twice; a ray that misses the root box costs that one box test. The nearest hit
 /// and the three rules are those of a plain LIST of the same children.

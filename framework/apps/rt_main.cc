@@ -95,7 +95,11 @@ options parse(int argc, char** argv, const vl::registry& pieces) {
     return o;
 }
 
-std::size_t heap_in_use() { return mallinfo2().uordblks; }
+/// Bytes allocated with malloc and new, including the large blocks malloc maps on their own.
+std::size_t heap_in_use() {
+    const struct mallinfo2 m = mallinfo2();
+    return m.uordblks + m.hblkhd;
+}
 
 }  // namespace
 
@@ -122,7 +126,12 @@ int vl::rt_main(int argc, char** argv, const registry& types) {
         vl::render_options ro;
         ro.threads = opt.threads;
         ro.seed = opt.seed;
+        const std::size_t heap_at_render = heap_in_use();
         const vl::render_stats st = vl::render(s, types, image, ro);
+        // What the render left allocated beyond its statistics: what the scene built on
+        // its first ray (a BVH's tree).
+        const std::size_t stats_bytes = st.tests_per_pixel.capacity() * sizeof(st.tests_per_pixel[0]);
+        const std::size_t built_bytes = heap_in_use() - heap_at_render - std::min(stats_bytes, heap_in_use() - heap_at_render);
         image.save(opt.output);
 
         std::uint32_t most = 0;
@@ -145,8 +154,9 @@ int vl::rt_main(int argc, char** argv, const registry& types) {
             std::printf("time            %.3f s\n", st.seconds);
             std::printf("wrote           %s%s%s\n", opt.output.c_str(), opt.heatmap.empty() ? "" : " and ",
                         opt.heatmap.c_str());
-            std::printf("memory          scene model %.1f KiB, frame buffer %.1f KiB (%s, %zu bytes per pixel)\n",
-                        static_cast<double>(scene_bytes) / 1024.0, static_cast<double>(image.bytes_per_pixel()) * s.width * s.height / 1024.0, std::string(image.storage_name()).c_str(),
+            std::printf("memory          scene model %.1f KiB, %.1f KiB more after rendering (what the first ray built, such as a BVH's tree), frame buffer %.1f KiB (%s, %zu bytes per pixel)\n",
+                        static_cast<double>(scene_bytes) / 1024.0, static_cast<double>(built_bytes) / 1024.0,
+                        static_cast<double>(image.bytes_per_pixel()) * s.width * s.height / 1024.0, std::string(image.storage_name()).c_str(),
                         image.bytes_per_pixel());
         }
         return 0;

@@ -1,7 +1,12 @@
 #include "vl/primitive.hh"
 
+#include <array>
+#include <bit>
+#include <cstdint>
 #include <limits>
+#include <mutex>
 #include <ostream>
+#include <set>
 
 namespace vl {
 
@@ -35,10 +40,36 @@ void write_surface(std::ostream& out, const surface& s) {
 
 void primitive::read_with_surface(scene_reader& in, std::vector<scene_reader::property> properties) {
     const std::string who = type_name();
-    add_surface_properties(properties, in, surface_, who);
+    surface s = *surface_;
+    add_surface_properties(properties, in, s, who);
     in.read_block(who, properties);
+    set_surface(s);
 }
 
-void primitive::write_surface(std::ostream& out) const { vl::write_surface(out, surface_); }
+void primitive::write_surface(std::ostream& out) const { vl::write_surface(out, *surface_); }
+
+namespace {
+
+/// A surface's values as bits, so that equal means identical (NaN and -0 included) and
+/// the order is a strict weak one, which doubles with NaN do not give.
+std::array<std::uint64_t, 11> bits_of(const surface& s) {
+    const double v[11] = {s.clr.r, s.clr.g, s.clr.b, s.clr.a, s.kdr, s.ksr, s.kdt, s.kst, s.n, s.ior, s.zero_t};
+    std::array<std::uint64_t, 11> b{};
+    for (std::size_t i = 0; i < b.size(); ++i) b[i] = std::bit_cast<std::uint64_t>(v[i]);
+    return b;
+}
+
+struct bitwise_less {
+    bool operator()(const surface& a, const surface& b) const { return bits_of(a) < bits_of(b); }
+};
+
+}  // namespace
+
+const surface* primitive::shared_surface(const surface& s) {
+    static std::mutex mutex;
+    static std::set<surface, bitwise_less> surfaces;  // a set's elements never move
+    const std::lock_guard lock(mutex);
+    return &*surfaces.insert(s).first;
+}
 
 }  // namespace vl

@@ -2,10 +2,11 @@
 //
 // Built with the surface area heuristic over 32 bins of the children's centres (I. Wald,
 // "On fast construction of SAH-based bounding volume hierarchies", IEEE Symposium on
-// Interactive Ray Tracing 2007); stored flat, depth first, 32 bytes a node, with float
-// boxes rounded outwards; walked near-first with a slab test that takes the ray's
-// reciprocal direction once per ray (A. Williams, S. Barrus, R. K. Morley and P. Shirley,
-// "An efficient and robust ray-box intersection algorithm", JGT 10(1), 2005).
+// Interactive Ray Tracing 2007); stored flat, each inner node one 64-byte cache line that
+// holds its two children's boxes, in floats rounded outwards; walked near-first with a
+// slab test that takes the ray's reciprocal direction once per ray (A. Williams,
+// S. Barrus, R. K. Morley and P. Shirley, "An efficient and robust ray-box intersection
+// algorithm", JGT 10(1), 2005).
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -26,7 +27,9 @@ namespace vl::stage03 {
 
 namespace {
 
-constexpr double traversal_cost = 1;  // a node's two box tests, in units of one child test
+// What entering an inner node costs, in units of one child's intersect(): its two box
+// tests, each counted as one test, as the budgets count them.
+constexpr double traversal_cost = 2;
 constexpr int max_bins = 32;          // SAH bins per axis (Wald 2007 finds 16 to 32 enough)
 constexpr int max_sah_depth = 60;     // deeper than this, split by count (always balanced)
 // The deepest tree: 60 SAH levels, then halving at most 32 times (2^32 children).
@@ -117,11 +120,11 @@ public:
 
     point min_point() const override {
         ensure_built();
-        return nodes_.empty() ? NaN_point : point(root_.lo[0], root_.lo[1], root_.lo[2]);
+        return order_.empty() ? NaN_point : point(root_.lo[0], root_.lo[1], root_.lo[2]);
     }
     point max_point() const override {
         ensure_built();
-        return nodes_.empty() ? NaN_point : point(root_.hi[0], root_.hi[1], root_.hi[2]);
+        return order_.empty() ? NaN_point : point(root_.hi[0], root_.hi[1], root_.hi[2]);
     }
 
     void read(scene_reader& in) override {
@@ -139,14 +142,20 @@ public:
     }
 
 private:
-    /// One node in 32 bytes: its box, and where its children are.
-    struct node {
-        float bounds[2][3];       // [0] the low corner, [1] the high one, rounded outwards
-        std::uint32_t index = 0;  // a leaf: its first child in order_; an inner node: its right child
-        std::uint32_t count = 0;  // a leaf: how many children it holds; 0 for an inner node,
-                                  // whose left child is the node after it
+    /// Where a subtree is: an inner node, or a leaf's run of children in order_.
+    struct subtree {
+        std::uint32_t index = 0;  // count 0: nodes_[index]; otherwise order_[index, index + count)
+        std::uint32_t count = 0;  // a leaf: how many children it holds
     };
-    static_assert(sizeof(node) == 32);
+
+    /// An inner node in one cache line: the boxes of its two subtrees and where they are,
+    /// so that the two box tests of a node read one line. Leaves are not nodes: a leaf is
+    /// a run of children that its parent points to.
+    struct node {
+        float bounds[2][2][3];  // [subtree][0 low corner, 1 high corner][axis], rounded outwards
+        subtree child[2];       // [0] left, [1] right
+    };
+    static_assert(sizeof(node) == 64);
 
     struct item {
         box3 bounds;
@@ -175,36 +184,25 @@ private:
             for (int k = 0; k < 3; ++k) it.centre[k] = (it.bounds.lo[k] + it.bounds.hi[k]) / 2;
             items.push_back(it);
         }
-        nodes_.reserve(2 * items.size());
-        build_node(items, 0, items.size(), 0);
+        for (const item& it : items) root_.grow(it.bounds);
+        nodes_.reserve(items.size());
+        root_subtree_ = build_subtree(items, 0, items.size(), 0, root_);
+        nodes_.shrink_to_fit();  // N - 1 nodes at most, usually far fewer
         order_.reserve(items.size());
         for (const item& it : items) order_.push_back(it.object);
     }
 
-    /// Builds the subtree of items[begin, end) at nodes_.back() + 1; returns its index.
-    std::uint32_t build_node(std::vector<item>& items, std::size_t begin, std::size_t end, int depth) const {
-        const auto index = static_cast<std::uint32_t>(nodes_.size());
-        nodes_.emplace_back();
-        box3 bounds, centres;
-        for (std::size_t i = begin; i < end; ++i) {
-            bounds.grow(items[i].bounds);
-            centres.grow(items[i].centre);
-        }
-        for (int k = 0; k < 3; ++k) {
-            nodes_[index].bounds[0][k] = round_down(bounds.lo[k]);
-            nodes_[index].bounds[1][k] = round_up(bounds.hi[k]);
-        }
-        if (index == 0) root_ = bounds;  // the tree's box, exactly, for min_point and the first test
+    /// Builds the subtree of items[begin, end), whose box is `bounds`; returns where it is.
+    subtree build_subtree(std::vector<item>& items, std::size_t begin, std::size_t end, int depth,
+                          const box3& bounds) const {
         const std::size_t n = end - begin;
-        auto make_leaf = [&] {
-            nodes_[index].index = static_cast<std::uint32_t>(begin);
-            nodes_[index].count = static_cast<std::uint32_t>(n);
-            return index;
-        };
-        if (n == 1) return make_leaf();
+        const subtree leaf{static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(n)};
+        if (n == 1) return leaf;
+        box3 centres;
+        for (std::size_t i = begin; i < end; ++i) centres.grow(items[i].centre);
 
         const split best = depth < max_sah_depth ? cheapest_split(items, begin, end, bounds, centres) : split{};
-        if (n <= static_cast<std::size_t>(leaf_size_) && !(best.cost < static_cast<double>(n))) return make_leaf();
+        if (n <= static_cast<std::size_t>(leaf_size_) && !(best.cost < static_cast<double>(n))) return leaf;
         std::size_t middle;
         if (best.axis < 0) {  // every centre alike, or too deep: split by count
             middle = begin + n / 2;
@@ -217,9 +215,20 @@ private:
                 [&](const item& it) { return bin_of(it.centre[axis], lo, scale, bins) < best.bin; });
             middle = static_cast<std::size_t>(right_of_split - items.begin());
         }
-        build_node(items, begin, middle, depth + 1);
-        nodes_[index].index = build_node(items, middle, end, depth + 1);
-        return index;
+        const auto index = static_cast<std::uint32_t>(nodes_.size());
+        nodes_.emplace_back();
+        const std::size_t from[2] = {begin, middle}, to[2] = {middle, end};
+        for (int side = 0; side < 2; ++side) {
+            box3 box;
+            for (std::size_t i = from[side]; i < to[side]; ++i) box.grow(items[i].bounds);
+            for (int k = 0; k < 3; ++k) {
+                nodes_[index].bounds[side][0][k] = round_down(box.lo[k]);
+                nodes_[index].bounds[side][1][k] = round_up(box.hi[k]);
+            }
+            const subtree child = build_subtree(items, from[side], to[side], depth + 1, box);
+            nodes_[index].child[side] = child;  // after the call, which may move nodes_
+        }
+        return {index, 0};
     }
 
     struct split {
@@ -276,17 +285,17 @@ private:
         return best;
     }
 
-    /// The slab test of node `nd`'s box against `sr` for t in [0, t_max]: true, with where
+    /// The slab test of `box` against `sr` for t in [0, t_max]: true, with where
     /// the ray enters the box in `t_near`, when the ray passes through it. Branch-free: the
     /// face met first comes from the direction's sign, and the IEEE rules do the rest. A
     /// zero direction component gives distances of +-infinity (inside the slab or never);
     /// the NaN of 0 * infinity, for an origin on a face of such a slab, is dropped by
     /// std::max and std::min as their second argument, so that slab limits nothing.
-    static bool slabs(const node& nd, const slab_ray& sr, double t_max, double& t_near) {
+    static bool slabs(const float (&box)[2][3], const slab_ray& sr, double t_max, double& t_near) {
         double t0 = 0, t1 = t_max;
         for (int k = 0; k < 3; ++k) {
-            const double near = (nd.bounds[sr.first_face[k]][k] - sr.origin[k]) * sr.inverse[k];
-            const double far = (nd.bounds[1 - sr.first_face[k]][k] - sr.origin[k]) * sr.inverse[k] * far_stretch;
+            const double near = (box[sr.first_face[k]][k] - sr.origin[k]) * sr.inverse[k];
+            const double far = (box[1 - sr.first_face[k]][k] - sr.origin[k]) * sr.inverse[k] * far_stretch;
             t0 = std::max(t0, near);
             t1 = std::min(t1, far);
         }
@@ -296,45 +305,45 @@ private:
 
     intersection find_intersection(const ray& r) const override {
         ensure_built();
-        if (nodes_.empty()) return intersection::none();
+        if (order_.empty()) return intersection::none();
         const point lo(root_.lo[0], root_.lo[1], root_.lo[2]), hi(root_.hi[0], root_.hi[1], root_.hi[2]);
         ray_span span;
         if (!hits_box(r, lo, hi, INFINITY, &span)) return intersection::none();  // counts its test
         const slab_ray sr(r);
         struct entry {
-            std::uint32_t node;
+            subtree where;
             double t_near;
         };
         std::array<entry, max_tree_depth + 2> stack;  // near-first keeps at most one entry per level
         std::size_t top = 0;
-        stack[top++] = {0, span.t_near};
+        stack[top++] = {root_subtree_, span.t_near};
         std::uint64_t box_tests = 0;
         intersection best = intersection::none();
         while (top > 0) {
             const entry e = stack[--top];
             if (best.hit() && e.t_near > best.t) continue;  // its box starts beyond the best hit
-            const node& nd = nodes_[e.node];
-            if (nd.count > 0) {
-                for (std::uint32_t k = nd.index; k < nd.index + nd.count; ++k) {
+            if (e.where.count > 0) {  // a leaf
+                for (std::uint32_t k = e.where.index; k < e.where.index + e.where.count; ++k) {
                     const intersection i = order_[k]->intersect(r);
                     if (i.nearer_than(best)) best = i;
                 }
                 continue;
             }
+            const node& nd = nodes_[e.where.index];
             const double t_max = best.hit() ? best.t : INFINITY;
-            const std::uint32_t left = e.node + 1, right = nd.index;
             double near_left, near_right;
-            const bool hit_left = slabs(nodes_[left], sr, t_max, near_left);
-            const bool hit_right = slabs(nodes_[right], sr, t_max, near_right);
+            const bool hit_left = slabs(nd.bounds[0], sr, t_max, near_left);
+            const bool hit_right = slabs(nd.bounds[1], sr, t_max, near_right);
             box_tests += 2;
+            const entry left{nd.child[0], near_left}, right{nd.child[1], near_right};
             if (hit_left && hit_right) {
                 const bool left_first = near_left <= near_right;
-                stack[top++] = left_first ? entry{right, near_right} : entry{left, near_left};  // the far one waits
-                stack[top++] = left_first ? entry{left, near_left} : entry{right, near_right};
+                stack[top++] = left_first ? right : left;  // the far one waits
+                stack[top++] = left_first ? left : right;
             } else if (hit_left) {
-                stack[top++] = {left, near_left};
+                stack[top++] = left;
             } else if (hit_right) {
-                stack[top++] = {right, near_right};
+                stack[top++] = right;
             }
         }
         count_bounding_volume_tests(box_tests);
@@ -344,8 +353,9 @@ private:
     int leaf_size_;
     mutable std::mutex build_mutex_;
     mutable std::atomic<bool> built_{false};
-    mutable box3 root_;                                 // the root's box, exactly
-    mutable std::vector<node> nodes_;                  // the tree, root first (built by ensure_built)
+    mutable box3 root_;                                 // the children's box, exactly
+    mutable subtree root_subtree_;                     // the root: nodes_[0], or one leaf
+    mutable std::vector<node> nodes_;                  // the inner nodes, root first (built by ensure_built)
     mutable std::vector<const rtab_component*> order_;  // the children as the leaves hold them
 };
 
