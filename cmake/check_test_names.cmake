@@ -6,7 +6,7 @@
 # ctest, or pass without running, with no other sign.
 cmake_minimum_required(VERSION 3.25)
 set(root ${CMAKE_ARGV3})
-file(GLOB_RECURSE files ${root}/framework/*.cc ${root}/pieces/*.cc ${root}/assignments/*.cc ${root}/grader/hidden/*.cc ${root}/grader/tests/*.cc)
+file(GLOB_RECURSE files ${root}/framework/*.cc ${root}/pieces/*.cc ${root}/assignments/*.cc ${root}/grader/hidden/*.cc ${root}/grader/tests/*.cc ${root}/bench/*.cc)
 list(FILTER files EXCLUDE REGEX "/submissions/")
 set(bad "")
 foreach(f ${files})
