@@ -209,7 +209,7 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 ///
 /// **Budgets** (graded, see the tests): for N small spheres at random in the unit cube
 /// and rays through them, at most 3·log2(N) primitive tests and 12·log2(N) box tests per
-/// ray (the reference makes about 1.5 and 7·log2(N)), and at most 1.5 times the reference
+/// ray (the reference makes 3 to 8 and 5 to 7·log2(N)), and at most 1.5 times the reference
 /// BVH's total on every scene of the tests (random, clustered, long thin objects). A ray
 /// that hits one of them costs at least log2(N / 4) counted tests: no honest tree finds
 /// one of N children with fewer decisions, so uncounted bound tests show.

@@ -152,13 +152,13 @@ inline void check_budget(const std::string& scene, std::size_t n, const sweep_co
     VL_EXPECT(c.bounding <= bv_budget, "the BVH of " << scene << " (N = " << n << ") may make at most " << num(bv_per_log)
                                                      << " log2(N) = " << num(bv_budget) << " box tests per ray" << measured);
     // Finding one of N children takes at least log2(N / 4) decisions, each a counted test:
-    // a BVH that makes fewer per hit tests its boxes without vl::hits_box().
+    // a BVH that makes fewer per hit tests boxes it does not count.
     const double at_least = std::log2(static_cast<double>(n) / 4);
     VL_EXPECT(c.hits == 0 || c.hit_total >= at_least,
               "the BVH of " << scene << " (N = " << n << ") found its hits with " << num(c.hit_total)
                             << " box and primitive tests per ray on average over the " << c.hits
                             << " rays that hit; no tree of boxes can find one of N children with fewer than log2(N / 4) = "
-                            << num(at_least) << " (test every box with vl::hits_box(), which counts it)");
+                            << num(at_least) << " (count every box test: vl::hits_box() does, or call vl::count_bounding_volume_tests())");
     VL_EXPECT(c.total <= total_budget, "the BVH of " << scene << " (N = " << n << ") may make at most " << num(factor)
                                                      << " times the reference BVH's " << num(reference_total)
                                                      << " tests per ray, " << num(total_budget) << measured);
