@@ -90,16 +90,16 @@ scene_data displaced_sphere(int n, std::uint64_t seed) {
         }
         return at->second;
     };
-    // Each face: the axis it is perpendicular to, the side, and a grid over the other two.
-    for (int axis = 0; axis < 3; ++axis) {
+    // Each face: the axis it is perpendicular to (normal), the side, and a grid over the other two.
+    for (int normal = 0; normal < 3; ++normal) {
         for (int side : {0, n}) {
             for (int a = 0; a < n; ++a) {
                 for (int b = 0; b < n; ++b) {
                     const auto corner = [&](int da, int db) {
                         int c[3];
-                        c[axis] = side;
-                        c[(axis + 1) % 3] = a + da;
-                        c[(axis + 2) % 3] = b + db;
+                        c[normal] = side;
+                        c[(normal + 1) % 3] = a + da;
+                        c[(normal + 2) % 3] = b + db;
                         return vertex(c[0], c[1], c[2]);
                     };
                     const std::uint32_t v00 = corner(0, 0), v10 = corner(1, 0), v01 = corner(0, 1), v11 = corner(1, 1);
