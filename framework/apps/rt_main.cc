@@ -130,8 +130,9 @@ int vl::rt_main(int argc, char** argv, const registry& types) {
         const vl::render_stats st = vl::render(s, types, image, ro);
         // What the render left allocated beyond its statistics: what the scene built on
         // its first ray (a BVH's tree).
+        const std::size_t grown = heap_in_use() - heap_at_render;
         const std::size_t stats_bytes = st.tests_per_pixel.capacity() * sizeof(st.tests_per_pixel[0]);
-        const std::size_t built_bytes = heap_in_use() - heap_at_render - std::min(stats_bytes, heap_in_use() - heap_at_render);
+        const std::size_t built_bytes = grown - std::min(stats_bytes, grown);
         image.save(opt.output);
 
         std::uint32_t most = 0;

@@ -72,4 +72,9 @@ const surface* primitive::shared_surface(const surface& s) {
     return &*surfaces.insert(s).first;
 }
 
+const surface* primitive::default_surface() {
+    static const surface* const defaults = shared_surface(surface{});
+    return defaults;
+}
+
 }  // namespace vl

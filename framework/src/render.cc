@@ -19,7 +19,7 @@ std::uint64_t pixel_seed(int x, int y, std::uint64_t image_seed) {
     std::uint64_t z = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) ^
                       static_cast<std::uint32_t>(y);
     // Seed 0 leaves z as it is: the default image does not change.
-    return splitmix64_mix(z + 0x9e3779b97f4a7c15ull * (image_seed + 1));
+    return splitmix64_mix(z + splitmix64_gamma * (image_seed + 1));
 }
 
 namespace {

@@ -54,7 +54,7 @@ public:
     void set_surface(const surface& s) { surface_ = shared_surface(s); }
 
 protected:
-    primitive() : surface_(shared_surface(surface{})) {}
+    primitive() : surface_(default_surface()) {}
     /// Reads `{ ... }` with the object's own `properties` and the surface keys.
     void read_with_surface(scene_reader& in, std::vector<scene_reader::property> properties);
     /// Writes the surface keys that differ from the defaults, for write().
@@ -65,6 +65,8 @@ private:
     /// surfaces (a scene of a million spheres usually has a handful of surfaces), which
     /// saves 80 bytes per primitive; copies live as long as the program.
     static const surface* shared_surface(const surface& s);
+    /// shared_surface(surface{}), looked up once.
+    static const surface* default_surface();
 
     const surface* surface_;  // never null
 };

@@ -21,13 +21,16 @@ constexpr std::uint64_t splitmix64_mix(std::uint64_t z) {
     return z ^ (z >> 31);
 }
 
+/// The step of SplitMix64's Weyl sequence: the golden ratio's 64-bit fraction.
+inline constexpr std::uint64_t splitmix64_gamma = 0x9e3779b97f4a7c15ull;
+
 /// \brief SplitMix64 as a C++ UniformRandomBitGenerator: usable with every
 /// `std::*_distribution`, or through uniform01() for doubles in [0, 1).
 class splitmix64 {
 public:
     using result_type = std::uint64_t;  ///< every 64-bit value can come out
 
-    /// The generator whose first output is splitmix64_mix(seed + 0x9e3779b97f4a7c15).
+    /// The generator whose first output is splitmix64_mix(seed + splitmix64_gamma).
     constexpr explicit splitmix64(std::uint64_t seed) : state_(seed) {}
 
     static constexpr result_type min() { return 0; }  ///< the least output
@@ -36,7 +39,7 @@ public:
 
     /// The next 64 random bits.
     constexpr result_type operator()() {
-        state_ += 0x9e3779b97f4a7c15ull;  // the golden ratio's 64-bit fraction (Weyl sequence)
+        state_ += splitmix64_gamma;
         return splitmix64_mix(state_);
     }
 
