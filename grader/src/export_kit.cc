@@ -18,8 +18,8 @@ namespace {
 /// CMakeLists.txt goes, which builds nothing without grader/hidden/. pieces/ is what the
 /// build makes from the list of stages: the aggregate's template and the programs' main()s.
 /// The kit's README.md is kit_readme, the student's page, not the instructor's.
-const std::vector<std::string> kit_parts = {"CMakeLists.txt", "CMakePresets.json", ".gitignore", "framework", "pieces",
-                                            "assignments", "docs", "scenes", "tools/setup", "bench",
+const std::vector<std::string> kit_parts = {"CMakeLists.txt", "CMakePresets.json", ".gitignore", "LICENSE", "framework",
+                                            "pieces", "assignments", "docs", "scenes", "tools/setup", "bench",
                                             "cmake/stages.cmake", "cmake/check_test_names.cmake",
                                             "grader/CMakeLists.txt"};
 const char* const kit_readme = "kit/README.md";

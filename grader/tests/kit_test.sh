@@ -21,6 +21,7 @@ for forbidden in reference grader/hidden grader/tests grader/src .ci tools/updat
   [ ! -e "$kit/$forbidden" ] || fail "$forbidden is in the kit"
 done
 cmp -s "$source/kit/README.md" "$kit/README.md" || fail "the kit's README.md is not kit/README.md"
+cmp -s "$source/LICENSE" "$kit/LICENSE" || fail "the kit's LICENSE is not the project's"
 grep -rn "tools/update-reference-images\|grader/run " "$kit/assignments" "$kit/framework" "$kit/pieces" \
   "$kit/README.md" >"$work/instructor-only.txt" && fail "the kit tells students to run instructor-only commands:
 $(cat "$work/instructor-only.txt")"
