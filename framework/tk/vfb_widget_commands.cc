@@ -148,14 +148,20 @@ int cmd_pan(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     return TCL_OK;
 }
 
-int cmd_clear(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
-    if (objc != 2) return wrong_args(interp, objv, "");
-    if (refuse_while_rendering(w, interp, "clear") != TCL_OK) return TCL_ERROR;
-    w->pixels->clear();
+// After the whole buffer has changed (clear, load): the last render's counts no longer
+// describe it, and every pixel is redrawn.
+void show_new_contents(widget* w) {
     w->tests.clear();
     refresh_colors(w, {0, 0, w->pixels->width(), w->pixels->height()});
     refresh_heat_colors(w);
     schedule_full_redraw(w);
+}
+
+int cmd_clear(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+    if (objc != 2) return wrong_args(interp, objv, "");
+    if (refuse_while_rendering(w, interp, "clear") != TCL_OK) return TCL_ERROR;
+    w->pixels->clear();
+    show_new_contents(w);
     return TCL_OK;
 }
 
@@ -169,10 +175,7 @@ int cmd_load(widget* w, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
     } catch (const std::exception& e) {
         return set_error(interp, std::string("load: ") + e.what());
     }
-    w->tests.clear();
-    refresh_colors(w, {0, 0, w->pixels->width(), w->pixels->height()});
-    refresh_heat_colors(w);
-    schedule_full_redraw(w);
+    show_new_contents(w);
     return TCL_OK;
 }
 
