@@ -9,7 +9,7 @@
 /// pieces: `vfbsh` calls Vfb_Init from its Tcl_AppInit, and a plain wish gets it with
 /// `package require vfb` (the loadable module, built from the same objects against the Tcl
 /// and Tk stubs). The commands and options are documented in docs/ta-guide.md and in the
-/// option table and command list of vfb_widget.cc.
+/// option table of vfb_widget_options.cc and the command list of vfb_widget_commands.cc.
 #include <tcl.h>
 
 #include "vl/registry.hh"
