@@ -1,6 +1,8 @@
 // The virtual frame buffer: construction by storage name, whole-row load and save.
 #include "vl/vfb.hh"
 
+#include "vl/image_io.hh"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>

@@ -1,5 +1,6 @@
 // The virtual frame buffer: coordinates, errors, storages chosen at run time, load and save.
 #include "vl/vfb.hh"
+#include "vl/image_io.hh"
 
 #include "image_test_support.hh"
 
