@@ -13,17 +13,17 @@ image::image(int width, int height, int channels, sample_type type)
     : width_(width), height_(height), channels_(channels), type_(type) {
     if (width < 0 || height < 0 || width > max_image_dimension || height > max_image_dimension ||
         std::int64_t{width} * height > max_image_pixels)
-        throw std::invalid_argument("vl::image: size " + std::to_string(width) + " x " +
-                                    std::to_string(height) + " is outside what an image may be");
+        throw usage_error("vl::image: size " + std::to_string(width) + " x " +
+                          std::to_string(height) + " is outside what an image may be");
     if (channels < 1 || channels > 4)
-        throw std::invalid_argument("vl::image: channels must be 1 to 4, not " + std::to_string(channels));
+        throw usage_error("vl::image: channels must be 1 to 4, not " + std::to_string(channels));
     bytes_.resize(row_bytes() * static_cast<std::size_t>(height));
 }
 
 std::size_t image::row_offset(int y) const {
     if (y < 0 || y >= height_)
-        throw std::out_of_range("vl::image: row " + std::to_string(y) + " is outside 0.." +
-                                std::to_string(height_ - 1));
+        throw usage_error("vl::image: row " + std::to_string(y) + " is outside 0.." +
+                          std::to_string(height_ - 1));
     return static_cast<std::size_t>(y) * row_samples();
 }
 
@@ -72,7 +72,7 @@ image convert_samples(const image& img, sample_type to) {
 
 image convert_channels(const image& img, int channels) {
     if (img.channels() == channels) return img;
-    if (channels < 1 || channels > 4) throw std::invalid_argument("vl::convert_channels: channels must be 1 to 4");
+    if (channels < 1 || channels > 4) throw usage_error("vl::convert_channels: channels must be 1 to 4");
     // Work in linear float, where luminance is defined, and go back to the original type.
     const image lin = convert_samples(img, sample_type::f32);
     image out(img.width(), img.height(), channels, sample_type::f32);

@@ -190,7 +190,7 @@ pnm_row_writer::~pnm_row_writer() = default;
 
 void pnm_row_writer::write_row(std::span<const std::uint8_t> row) {
     if (row.size() != row_bytes_ || rows_left_ <= 0)
-        throw std::logic_error("pnm_row_writer: a row of the wrong size, or one row too many");
+        throw usage_error("pnm_row_writer: a row of the wrong size, or one row too many");
     out_->write(row.data(), row.size());
     --rows_left_;
 }

@@ -116,9 +116,10 @@ TEST_CASE("bad images: every malformed file gives `FILE: what is wrong`", "[imag
             CHECK(message.rfind(path.string() + ": ", 0) == 0);  // starts with the file's name
             CHECK_THAT(message, Catch::Contains(f.problem));
         }
-        // vfb::load reports the same way.
+        // vfb::load reports the same way, and a bad image is a bad file like any other.
         vfb v(3, 3);
         CHECK_THROWS_AS(v.load(path), image_error);
+        CHECK_THROWS_AS(v.load(path), file_error);
     }
 }
 

@@ -44,10 +44,10 @@ TEST_CASE("image: rows are top to bottom and samples are checked for their type"
     CHECK(img.samples<std::uint8_t>().size() == 18);
     img.row<std::uint8_t>(1)[0] = 7;
     CHECK(img.samples<std::uint8_t>()[9] == 7);
-    CHECK_THROWS_AS(img.samples<float>(), std::logic_error);
-    CHECK_THROWS_AS(img.row<std::uint8_t>(2), std::out_of_range);
-    CHECK_THROWS_AS(image(70000, 1, 3, sample_type::u8), std::invalid_argument);
-    CHECK_THROWS_AS(image(1, 1, 5, sample_type::u8), std::invalid_argument);
+    CHECK_THROWS_AS(img.samples<float>(), usage_error);
+    CHECK_THROWS_AS(img.row<std::uint8_t>(2), usage_error);
+    CHECK_THROWS_AS(image(70000, 1, 3, sample_type::u8), usage_error);
+    CHECK_THROWS_AS(image(1, 1, 5, sample_type::u8), usage_error);
 }
 
 TEST_CASE("image files: PPM and PGM round trip at 8 and 16 bits", "[image][pnm]") {

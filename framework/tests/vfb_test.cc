@@ -34,13 +34,13 @@ TEST_CASE("vfb: a pixel outside the buffer is an error that names it and the bou
     vfb v(9, 4);
     CHECK_THROWS_WITH(v.put_pixel(10, 0, vfb_pixel(1)), "vfb: pixel (10, 0) is outside (0, 0)..(9, 4)");
     CHECK_THROWS_AS(v.get_pixel(0, -1), vfb_range_error);
-    CHECK_THROWS_AS(v.get_pixel(-1, 0), std::out_of_range);
+    CHECK_THROWS_AS(v.get_pixel(-1, 0), usage_error);
     CHECK_THROWS_AS(v.put_pixel(vfb_pixel(3.5, 5.0, 0.0, 1.0, 1.0, 1.0)), vfb_range_error);
     CHECK_THROWS_AS(v.put_pixel(vfb_pixel(1e300, 0.0, 0.0, 1.0, 1.0, 1.0)), vfb_range_error);
     CHECK_THROWS_AS(v.put_pixel(vfb_pixel(std::nan(""), 0.0, 0.0, 1.0, 1.0, 1.0)), vfb_range_error);
     CHECK_THROWS_AS(v.row<rgb8_storage>(5), vfb_range_error);
-    CHECK_THROWS_AS(vfb(-1, 3), std::invalid_argument);
-    CHECK_THROWS_AS(vfb(70000, 1), std::invalid_argument);
+    CHECK_THROWS_AS(vfb(-1, 3), usage_error);
+    CHECK_THROWS_AS(vfb(70000, 1), usage_error);
     CHECK_THROWS_WITH(vfb(2, 2, "hdr"), Catch::Contains("unknown pixel storage 'hdr'") && Catch::Contains("aa4"));
 }
 
@@ -56,7 +56,7 @@ TEST_CASE("vfb: the storage is chosen by name at run time or by type in one line
     CHECK(z.storage_name() == "zrgb");
     CHECK(z.bytes_per_pixel() == 16);
     CHECK(z.holds<zbuffer_storage>());
-    CHECK_THROWS_AS(z.cells<rgb8_storage>(), std::logic_error);
+    CHECK_THROWS_AS(z.cells<rgb8_storage>(), usage_error);
 }
 
 TEST_CASE("vfb: a pixel made with coordinates goes where they point", "[vfb]") {
@@ -65,7 +65,7 @@ TEST_CASE("vfb: a pixel made with coordinates goes where they point", "[vfb]") {
     v.put_pixel(vfb_pixel(point(2.75, 1.75, 0.0), WHITE));
     CHECK(v.get_pixel(2, 1).r() == Approx(0.5));
     CHECK(v.get_pixel(1, 2).r() == 0.0);
-    CHECK_THROWS_AS(v.put_pixel(vfb_pixel(1.0, 1.0, 1.0)), std::invalid_argument);  // no coordinates
+    CHECK_THROWS_AS(v.put_pixel(vfb_pixel(1.0, 1.0, 1.0)), usage_error);  // no coordinates
 }
 
 TEST_CASE("vfb: the z rule holds through put_pixel", "[vfb][zbuffer]") {

@@ -5,11 +5,14 @@
 ///
 /// Integer samples are sRGB-encoded, float samples are linear (vl::linear_to_srgb converts).
 /// Image files (PNM, PNG, PFM) are read and written by the functions of image_io.hh.
+/// Using an image wrongly (a size outside the limits, samples viewed as the wrong type, a
+/// row outside the image) throws vl::usage_error.
+
+#include "vl/error.hh"
 
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -35,12 +38,12 @@ constexpr std::size_t sample_size(sample_type t) { return t == sample_type::u8 ?
 ///
 /// Channels are 1 (gray), 2 (gray, alpha), 3 (RGB) or 4 (RGBA), interleaved. The samples
 /// are one contiguous array; samples<T>() and row<T>() view it with T = std::uint8_t,
-/// std::uint16_t or float matching type() (anything else throws std::logic_error).
+/// std::uint16_t or float matching type() (anything else throws vl::usage_error).
 class image {
 public:
     /// An empty image (0 x 0).
     image() = default;
-    /// A black image; throws std::invalid_argument for sizes outside
+    /// A black image; throws vl::usage_error for sizes outside
     /// vl::max_image_dimension and vl::max_image_pixels or channels outside 1..4.
     image(int width, int height, int channels, sample_type type);
 
@@ -85,7 +88,7 @@ private:
         constexpr sample_type wanted = std::is_same_v<T, std::uint8_t>    ? sample_type::u8
                                        : std::is_same_v<T, std::uint16_t> ? sample_type::u16
                                                                            : sample_type::f32;
-        if (wanted != type_) throw std::logic_error("vl::image: samples are not of the requested type");
+        if (wanted != type_) throw usage_error("vl::image: samples are not of the requested type");
     }
 
     int width_ = 0, height_ = 0, channels_ = 0;

@@ -17,9 +17,11 @@
 ///
 /// Integer samples are sRGB-encoded, float samples are linear (vl::linear_to_srgb converts).
 /// Readers pick the format by the file's first bytes, writers by the file name's extension.
-/// Every problem with a file throws vl::image_error with the message `FILE: what is wrong`;
-/// a reader never trusts a size in a header before checking that the file can hold it.
+/// Every problem with a file throws vl::image_error (a vl::file_error) with the message
+/// `FILE: what is wrong`; a reader never trusts a size in a header before checking that the
+/// file can hold it.
 
+#include "vl/error.hh"
 #include "vl/image.hh"
 
 #include <cstddef>
@@ -27,17 +29,15 @@
 #include <filesystem>
 #include <memory>
 #include <span>
-#include <stdexcept>
 #include <string>
 
 namespace vl {
 
 /// \brief Any problem reading or writing an image file; what() is `FILE: what is wrong`.
-class image_error : public std::runtime_error {
+class image_error : public file_error {
 public:
     /// `file` names the file (or the in-memory source) and `problem` says what is wrong.
-    image_error(const std::string& file, const std::string& problem)
-        : std::runtime_error(file + ": " + problem) {}
+    image_error(const std::string& file, const std::string& problem) : file_error(file + ": " + problem) {}
 };
 
 /// \name Reading and writing whole files

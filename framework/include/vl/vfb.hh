@@ -2,6 +2,7 @@
 /// \file
 /// \brief The virtual frame buffer: vl::vfb.
 
+#include "vl/error.hh"
 #include "vl/image.hh"
 #include "vl/pixel.hh"
 #include "vl/vfb_storage.hh"
@@ -10,7 +11,6 @@
 #include <filesystem>
 #include <memory>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <typeinfo>
@@ -22,8 +22,8 @@ namespace vl {
 using vfb_int = int;
 
 /// \brief A put_pixel() or get_pixel() outside the buffer; what() gives the coordinates and
-/// the bounds.
-class vfb_range_error : public std::out_of_range {
+/// the bounds. A vl::usage_error: the caller asked for a pixel that is not there.
+class vfb_range_error : public usage_error {
 public:
     /// Builds the message `vfb: pixel (x, y) is outside (0, 0)..(max_x, max_y)`.
     vfb_range_error(vfb_int x, vfb_int y, vfb_int max_x, vfb_int max_y);
@@ -62,7 +62,7 @@ public:
     /// A buffer with pixels (0, 0) to (max_x, max_y), in vl::storage_class.
     vfb(vfb_int max_x, vfb_int max_y);
     /// A buffer in the storage named `storage` (see storage_names()); throws
-    /// std::invalid_argument for an unknown name.
+    /// vl::usage_error for an unknown name.
     vfb(vfb_int max_x, vfb_int max_y, std::string_view storage);
     /// A buffer in storage S (any storage policy, including your own).
     template <class S> static vfb with_storage(vfb_int max_x, vfb_int max_y) {
@@ -116,11 +116,11 @@ public:
     /// True if the buffer's storage is S.
     template <class S> bool holds() const { return storage_->storage_type() == typeid(S); }
     /// The typed fast path: all cells, row 0 (the bottom) first; cell (x, y) is at
-    /// `y * width() + x`. Throws std::logic_error if the storage is not S.
+    /// `y * width() + x`. Throws vl::usage_error if the storage is not S.
     template <class S> std::span<typename S::cell> cells() {
         if (!holds<S>())
-            throw std::logic_error("vfb::cells: the buffer holds " + std::string(storage_name()) + ", not " +
-                                   std::string(S::name));
+            throw usage_error("vfb::cells: the buffer holds " + std::string(storage_name()) + ", not " +
+                              std::string(S::name));
         return {static_cast<typename S::cell*>(storage_->cells()), static_cast<std::size_t>(width()) * height()};
     }
     /// Row y (0 is the bottom) of the typed fast path; throws vl::vfb_range_error for a
