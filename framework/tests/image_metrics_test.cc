@@ -442,7 +442,7 @@ TEST_CASE("FLIP: the pixels per degree follow the paper's viewing formula", "[me
 }
 
 TEST_CASE("FLIP: the error map is a magma-coloured image of the inputs' size", "[metrics]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     const image ref = make_image(37, 19, scene);
     const flip_result f = flip(ref, make_image(37, 19, [](int x, int y) { return x > 20 ? rgb8{0, 0, 0} : scene(x, y); }));
     write_image(dir / "map.png", flip_error_map(f));

@@ -90,7 +90,7 @@ TEST_CASE("vfb: the typed fast path sees the cells row by row from the bottom", 
 }
 
 TEST_CASE("vfb: pixel (0, 0) is the lower left, the last row of a saved file", "[vfb][files]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     vfb v(2, 1);
     v.put_pixel(0, 0, vfb_pixel(1.0, 0.0, 0.0));
     v.save(dir / "corner.ppm");
@@ -104,7 +104,7 @@ TEST_CASE("vfb: pixel (0, 0) is the lower left, the last row of a saved file", "
 }
 
 TEST_CASE("vfb: load places the image's lower left at (x1, y1) and clips what falls outside", "[vfb][files]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     vfb src(3, 2);  // 4 x 3
     fill(src);
     src.save(dir / "src.png");
@@ -126,7 +126,7 @@ TEST_CASE("vfb: load places the image's lower left at (x1, y1) and clips what fa
 }
 
 TEST_CASE("vfb: loading replaces z-buffered pixels instead of testing their depth", "[vfb][files][zbuffer]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     vfb white(0, 0);
     white.put_pixel(0, 0, vfb_pixel(1));
     white.save(dir / "white.pfm");
@@ -137,7 +137,7 @@ TEST_CASE("vfb: loading replaces z-buffered pixels instead of testing their dept
 }
 
 TEST_CASE("vfb: every storage survives a save and load in every format", "[vfb][files][storage]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     for (const auto name : vfb::storage_names()) {
         vfb v(6, 4, name);
         fill(v);
@@ -161,7 +161,7 @@ TEST_CASE("vfb: every storage survives a save and load in every format", "[vfb][
 }
 
 TEST_CASE("vfb: gray storages save gray files, the alpha storage an RGBA PNG", "[vfb][files]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     vfb g(3, 3, "gray8");
     g.save(dir / "g.png");
     CHECK(read_image(dir / "g.png").channels() == 1);
@@ -184,7 +184,7 @@ TEST_CASE("vfb: gray storages save gray files, the alpha storage an RGBA PNG", "
 }
 
 TEST_CASE("vfb: a file in an unknown format or a missing file names the file", "[vfb][files][errors]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     vfb v(1, 1);
     CHECK_THROWS_WITH(v.save(dir / "out.jpg"), Catch::Contains("out.jpg: unknown image extension '.jpg'"));
     CHECK_THROWS_WITH(v.load(dir / "missing.png"), Catch::Contains("missing.png: cannot open"));
