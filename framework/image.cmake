@@ -1,5 +1,6 @@
 # vl_image: pixels and their storages, the virtual frame buffer, image files (PNM, PNG, PFM).
-add_library(vl_image STATIC src/pixel.cc src/vfb.cc src/image_io.cc)
+add_library(vl_image STATIC src/pixel.cc src/vfb.cc src/image.cc src/image_file.cc src/image_io.cc
+  src/pnm.cc src/png.cc src/pfm.cc)
 target_include_directories(vl_image PUBLIC include)
 target_link_libraries(vl_image PUBLIC vl_tuples PRIVATE PkgConfig::PNG vl_warnings)
 

@@ -5,6 +5,7 @@
 // for its constants and its choices where the paper leaves one open (image borders, the
 // separable filters); the code here is written for reading, in double precision.
 #include "vl/flip.hh"
+#include "vl/error.hh"
 
 #include "magma_map.hh"
 
@@ -12,7 +13,6 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 
 namespace vl {
@@ -315,12 +315,12 @@ double flip_default_pixels_per_degree() { return flip_pixels_per_degree(0.7, 384
 
 flip_result flip(const image& reference, const image& test, const flip_options& options) {
     if (reference.width() != test.width() || reference.height() != test.height())
-        throw std::invalid_argument("FLIP compares images of the same size; the reference is " +
-                                    std::to_string(reference.width()) + " x " + std::to_string(reference.height()) +
-                                    " pixels and the test image " + std::to_string(test.width()) + " x " +
-                                    std::to_string(test.height()));
+        throw usage_error("FLIP compares images of the same size; the reference is " +
+                          std::to_string(reference.width()) + " x " + std::to_string(reference.height()) +
+                          " pixels and the test image " + std::to_string(test.width()) + " x " +
+                          std::to_string(test.height()));
     if (!(options.pixels_per_degree > 0) || !std::isfinite(options.pixels_per_degree))
-        throw std::invalid_argument("FLIP: pixels per degree must be a positive number");
+        throw usage_error("FLIP: pixels per degree must be a positive number");
     const double ppd = options.pixels_per_degree;
     const rgb_planes ref = linear_rgb(reference), tst = linear_rgb(test);
 

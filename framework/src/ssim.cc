@@ -5,10 +5,10 @@
 //
 // with the weighted means, variances and covariance of equations (14)-(16).
 #include "vl/ssim.hh"
+#include "vl/error.hh"
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include "vl/pixel.hh"
@@ -77,10 +77,10 @@ plane window_average(const plane& in, const std::vector<double>& g, bool valid) 
 
 ssim_result ssim(const image& reference, const image& test) {
     if (reference.width() != test.width() || reference.height() != test.height())
-        throw std::invalid_argument("SSIM compares images of the same size; the reference is " +
-                                    std::to_string(reference.width()) + " x " + std::to_string(reference.height()) +
-                                    " pixels and the test image " + std::to_string(test.width()) + " x " +
-                                    std::to_string(test.height()));
+        throw usage_error("SSIM compares images of the same size; the reference is " +
+                          std::to_string(reference.width()) + " x " + std::to_string(reference.height()) +
+                          " pixels and the test image " + std::to_string(test.width()) + " x " +
+                          std::to_string(test.height()));
     using namespace ssim_constants;
     const plane x = luminance_signal(reference), y = luminance_signal(test);
     plane xx(x.w, x.h), yy(x.w, x.h), xy(x.w, x.h);

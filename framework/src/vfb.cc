@@ -1,6 +1,8 @@
 // The virtual frame buffer: construction by storage name, whole-row load and save.
 #include "vl/vfb.hh"
 
+#include "vl/image_io.hh"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -8,8 +10,8 @@
 namespace vl {
 
 vfb_range_error::vfb_range_error(vfb_int x, vfb_int y, vfb_int max_x, vfb_int max_y)
-    : std::out_of_range("vfb: pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside (0, 0)..(" +
-                        std::to_string(max_x) + ", " + std::to_string(max_y) + ")") {}
+    : usage_error("vfb: pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside (0, 0)..(" +
+                  std::to_string(max_x) + ", " + std::to_string(max_y) + ")") {}
 
 namespace {
 
@@ -41,10 +43,9 @@ std::size_t vfb::checked_pixels(vfb_int max_x, vfb_int max_y) {
     // The same limits as an image file, so that every buffer can be saved and loaded.
     if (max_x < 0 || max_y < 0 || max_x >= max_image_dimension || max_y >= max_image_dimension ||
         (std::int64_t{max_x} + 1) * (std::int64_t{max_y} + 1) > max_image_pixels)
-        throw std::invalid_argument("vfb: cannot make a buffer with max_x " + std::to_string(max_x) + " and max_y " +
-                                    std::to_string(max_y) + "; each must be 0 to " +
-                                    std::to_string(max_image_dimension - 1) + " and the pixels at most " +
-                                    std::to_string(max_image_pixels));
+        throw usage_error("vfb: cannot make a buffer with max_x " + std::to_string(max_x) + " and max_y " +
+                          std::to_string(max_y) + "; each must be 0 to " + std::to_string(max_image_dimension - 1) +
+                          " and the pixels at most " + std::to_string(max_image_pixels));
     return static_cast<std::size_t>(max_x + 1) * static_cast<std::size_t>(max_y + 1);
 }
 
@@ -62,7 +63,7 @@ vfb::vfb(vfb_int max_x, vfb_int max_y, std::string_view storage) : max_x_(max_x)
         }
     std::string known;
     for (const auto& s : storages) known += (known.empty() ? "" : ", ") + std::string(s.name);
-    throw std::invalid_argument("vfb: unknown pixel storage '" + std::string(storage) + "' (known: " + known + ")");
+    throw usage_error("vfb: unknown pixel storage '" + std::string(storage) + "' (known: " + known + ")");
 }
 
 vfb::~vfb() = default;
@@ -75,7 +76,7 @@ std::vector<std::string_view> vfb::storage_names() {
 
 void vfb::put_pixel(const vfb_pixel& p) {
     if (!p.has_position())
-        throw std::invalid_argument("vfb::put_pixel: this pixel has no coordinates; use put_pixel(x, y, pixel)");
+        throw usage_error("vfb::put_pixel: this pixel has no coordinates; use put_pixel(x, y, pixel)");
     const double fx = std::floor(p.x()), fy = std::floor(p.y());
     // Compare as doubles first: a huge or NaN coordinate must not overflow an int.
     if (!(fx >= 0 && fy >= 0 && fx <= max_x_ && fy <= max_y_))

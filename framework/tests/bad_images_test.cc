@@ -29,7 +29,7 @@ std::string big_endian(std::uint32_t v) {
 }
 
 // A valid 2 x 2 RGB PNG, written by our own writer.
-std::string good_png(const test::scratch_dir& dir) {
+std::string good_png(const test::temp_dir& dir) {
     write_image(dir / "good.png", image(2, 2, 3, sample_type::u8));
     return test::read_bytes(dir / "good.png");
 }
@@ -62,7 +62,7 @@ struct bad_file {
 }  // namespace
 
 TEST_CASE("bad images: every malformed file gives `FILE: what is wrong`", "[image][errors]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     const std::string png = good_png(dir);
     const std::vector<bad_file> files = {
         {"empty.ppm", "", "empty"},
@@ -116,20 +116,21 @@ TEST_CASE("bad images: every malformed file gives `FILE: what is wrong`", "[imag
             CHECK(message.rfind(path.string() + ": ", 0) == 0);  // starts with the file's name
             CHECK_THAT(message, Catch::Contains(f.problem));
         }
-        // vfb::load reports the same way.
+        // vfb::load reports the same way, and a bad image is a bad file like any other.
         vfb v(3, 3);
         CHECK_THROWS_AS(v.load(path), image_error);
+        CHECK_THROWS_AS(v.load(path), file_error);
     }
 }
 
 TEST_CASE("bad images: a directory is not an image", "[image][errors]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     std::filesystem::create_directory(dir / "sub.png");
     CHECK_THROWS_WITH(read_image(dir / "sub.png"), Catch::Contains("sub.png: is a directory"));
 }
 
 TEST_CASE("bad images: a header comment may hold anything, even what looks like numbers", "[image][pnm]") {
-    test::scratch_dir dir;
+    test::temp_dir dir;
     test::write_bytes(dir / "c.pgm", std::string("P5\n#99 99\n1#x\n# 7\n1\n#\n255\n") + '\x2a');
     // "#\n255": the comment ends at the line, and the maxval follows.
     const image img = read_image(dir / "c.pgm");

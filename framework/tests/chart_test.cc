@@ -28,7 +28,7 @@ vl::chart two_series() {
 }  // namespace
 
 TEST_CASE("a chart's numbers file holds every series in order, one block each", "[chart]") {
-    const vl::test::scratch_dir dir;
+    const vl::test::temp_dir dir;
     const vl::chart_files f = vl::draw_chart(two_series(), dir / "sweep");
     const std::string tsv = vl::test::read_bytes(f.tsv);
     CHECK(tsv.find("# series 0: reference\n1\t0\n1000\t0\n1e+06\t0.25\n") != std::string::npos);
@@ -41,7 +41,7 @@ TEST_CASE("a chart's numbers file holds every series in order, one block each", 
 TEST_CASE("with gnuplot a chart is an SVG and a PNG of the chart's size", "[chart]") {
     INFO("gnuplot is not installed: tools/setup installs gnuplot-nox");
     REQUIRE(vl::gnuplot_available());
-    const vl::test::scratch_dir dir;
+    const vl::test::temp_dir dir;
     vl::chart c = two_series();
     c.width = 640;
     c.height = 360;
@@ -59,7 +59,7 @@ TEST_CASE("with gnuplot a chart is an SVG and a PNG of the chart's size", "[char
 TEST_CASE("points a log axis cannot show are left out of the drawing, kept in the numbers", "[chart]") {
     INFO("gnuplot is not installed: tools/setup installs gnuplot-nox");
     REQUIRE(vl::gnuplot_available());
-    const vl::test::scratch_dir dir;
+    const vl::test::temp_dir dir;
     vl::chart c;
     c.title = "tests per ray";
     c.log_x = c.log_y = true;
@@ -72,7 +72,7 @@ TEST_CASE("points a log axis cannot show are left out of the drawing, kept in th
 }
 
 TEST_CASE("a chart that cannot be written names the file", "[chart]") {
-    const vl::test::scratch_dir dir;
+    const vl::test::temp_dir dir;
     try {
         vl::draw_chart(two_series(), dir / "no such folder" / "sweep");
         FAIL("no error");

@@ -1,6 +1,8 @@
 #pragma once
-// Helpers shared by the image tests: a scratch directory and file writers. Students need not
-// read this file.
+// Helpers shared by the image tests: file writers and ImageMagick, and the scratch
+// directory (support/temp_dir.hh). Students need not read this file.
+#include "support/temp_dir.hh"
+
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -8,30 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace vl::test {
-
-/// A fresh directory under the system's temp directory, removed with everything in it.
-class scratch_dir {
-public:
-    scratch_dir() {
-        static int counter = 0;
-        path_ = std::filesystem::temp_directory_path() /
-                ("vl_image_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        std::filesystem::create_directories(path_);
-    }
-    ~scratch_dir() {
-        std::error_code ec;
-        std::filesystem::remove_all(path_, ec);
-    }
-    scratch_dir(const scratch_dir&) = delete;
-    scratch_dir& operator=(const scratch_dir&) = delete;
-    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
-private:
-    std::filesystem::path path_;
-};
 
 /// Writes `bytes` to `file` as they are.
 inline void write_bytes(const std::filesystem::path& file, const std::string& bytes) {

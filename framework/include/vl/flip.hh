@@ -72,7 +72,7 @@ struct flip_result {
 
 /// \brief LDR-FLIP of `test` against `reference`.
 ///
-/// Both must have the same width and height (else std::invalid_argument saying both
+/// Both must have the same width and height (else vl::usage_error saying both
 /// sizes); channels and sample types may differ. Colours outside [0, 1] (float images) are
 /// clamped first, since LDR-FLIP is defined for displayable colours only.
 flip_result flip(const image& reference, const image& test, const flip_options& options = {});

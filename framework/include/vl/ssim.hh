@@ -42,7 +42,7 @@ struct ssim_result {
 
 /// \brief SSIM of `test` against `reference` (symmetric in the two).
 ///
-/// Both must have the same width and height (else std::invalid_argument saying both sizes).
+/// Both must have the same width and height (else vl::usage_error saying both sizes).
 /// `map` is (width - 10) x (height - 10) for images of at least 11 x 11, else the images' size.
 ssim_result ssim(const image& reference, const image& test);
 

@@ -2,17 +2,15 @@
 /// \file
 /// \brief The virtual frame buffer: vl::vfb.
 
-#include "vl/image_io.hh"
+#include "vl/error.hh"
+#include "vl/image.hh"
 #include "vl/pixel.hh"
+#include "vl/vfb_storage.hh"
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <typeinfo>
@@ -24,120 +22,12 @@ namespace vl {
 using vfb_int = int;
 
 /// \brief A put_pixel() or get_pixel() outside the buffer; what() gives the coordinates and
-/// the bounds.
-class vfb_range_error : public std::out_of_range {
+/// the bounds. A vl::usage_error: the caller asked for a pixel that is not there.
+class vfb_range_error : public usage_error {
 public:
     /// Builds the message `vfb: pixel (x, y) is outside (0, 0)..(max_x, max_y)`.
     vfb_range_error(vfb_int x, vfb_int y, vfb_int max_x, vfb_int max_y);
 };
-
-namespace detail {
-
-// What vfb needs from a storage, whatever it is; storage_model<S> implements it for a
-// storage policy S. Rows are given by the index of their first cell; n cells follow.
-class storage_interface {
-public:
-    virtual ~storage_interface() = default;
-    virtual std::string_view name() const = 0;
-    virtual std::size_t bytes_per_pixel() const = 0;
-    virtual int natural_channels() const = 0;
-    virtual const std::type_info& storage_type() const = 0;
-    virtual void* cells() = 0;
-    virtual void put(std::size_t i, const vfb_pixel& p) = 0;
-    virtual vfb_pixel get(std::size_t i) const = 0;
-    virtual void clear() = 0;
-    // Bulk: read n cells as 8-bit sRGB or linear float samples with `channels` channels
-    // (1 gray, 2 gray+alpha, 3 RGB, 4 RGBA), or replace n cells with them (a load, so no
-    // z rule: what was there is cleared first).
-    virtual void read_srgb8(std::size_t first, std::size_t n, int channels, std::uint8_t* out) const = 0;
-    virtual void read_linear(std::size_t first, std::size_t n, int channels, float* out) const = 0;
-    virtual void write_srgb8(std::size_t first, std::size_t n, int channels, const std::uint8_t* in) = 0;
-    virtual void write_linear(std::size_t first, std::size_t n, int channels, const float* in) = 0;
-};
-
-template <class S> constexpr bool has_alpha() {
-    if constexpr (requires { S::has_alpha; }) return S::has_alpha;
-    else return false;
-}
-template <class S> constexpr int srgb8_channels() {
-    if constexpr (requires { S::srgb8_channels; }) return S::srgb8_channels;
-    else return 0;
-}
-
-// Spreads a vfb_pixel over `channels` samples: gray is luminance, alpha is az for storages
-// that keep alpha and opaque for the others.
-template <class S> void pixel_to_linear(const vfb_pixel& p, int channels, float* out) {
-    const double alpha = has_alpha<S>() ? p.az() : 1.0;
-    switch (channels) {
-    case 1: out[0] = static_cast<float>(p.gray()); break;
-    case 2: out[0] = static_cast<float>(p.gray()); out[1] = static_cast<float>(alpha); break;
-    case 3: out[0] = static_cast<float>(p.r()); out[1] = static_cast<float>(p.g()); out[2] = static_cast<float>(p.b()); break;
-    default:
-        out[0] = static_cast<float>(p.r()); out[1] = static_cast<float>(p.g()); out[2] = static_cast<float>(p.b());
-        out[3] = static_cast<float>(alpha);
-    }
-}
-template <class S> vfb_pixel linear_to_pixel(int channels, const float* in) {
-    const bool gray = channels <= 2, alpha = channels == 2 || channels == 4;
-    const double az = has_alpha<S>() && alpha ? in[channels - 1] : vfb_pixel::no_az;
-    return gray ? vfb_pixel(az, in[0], in[0], in[0]) : vfb_pixel(az, in[0], in[1], in[2]);
-}
-
-template <class S> class storage_model final : public storage_interface {
-public:
-    explicit storage_model(std::size_t n) : cells_(n) { clear(); }
-    std::string_view name() const override { return S::name; }
-    std::size_t bytes_per_pixel() const override { return S::bytes_per_pixel; }
-    int natural_channels() const override { return S::natural_channels; }
-    const std::type_info& storage_type() const override { return typeid(S); }
-    void* cells() override { return cells_.data(); }
-    void put(std::size_t i, const vfb_pixel& p) override { S::store(cells_[i], p); }
-    vfb_pixel get(std::size_t i) const override { return S::load(cells_[i]); }
-    void clear() override { for (auto& c : cells_) S::clear(c); }
-
-    void read_srgb8(std::size_t first, std::size_t n, int channels, std::uint8_t* out) const override {
-        if (channels == srgb8_channels<S>()) {  // the cells are the file's bytes: one copy
-            std::memcpy(out, &cells_[first], n * sizeof(typename S::cell));
-            return;
-        }
-        float lin[4];
-        for (std::size_t i = 0; i < n; ++i) {
-            pixel_to_linear<S>(S::load(cells_[first + i]), channels, lin);
-            for (int c = 0; c < channels; ++c) {
-                const bool alpha = (channels == 2 || channels == 4) && c == channels - 1;
-                out[i * channels + c] = alpha ? static_cast<std::uint8_t>(std::lround(std::clamp(lin[c], 0.0f, 1.0f) * 255))
-                                              : linear_to_srgb8(lin[c]);
-            }
-        }
-    }
-    void read_linear(std::size_t first, std::size_t n, int channels, float* out) const override {
-        for (std::size_t i = 0; i < n; ++i) pixel_to_linear<S>(S::load(cells_[first + i]), channels, out + i * channels);
-    }
-    void write_srgb8(std::size_t first, std::size_t n, int channels, const std::uint8_t* in) override {
-        if (channels == srgb8_channels<S>()) {
-            std::memcpy(&cells_[first], in, n * sizeof(typename S::cell));
-            return;
-        }
-        float lin[4];
-        for (std::size_t i = 0; i < n; ++i) {
-            for (int c = 0; c < channels; ++c) {
-                const bool alpha = (channels == 2 || channels == 4) && c == channels - 1;
-                const std::uint8_t v = in[i * channels + c];
-                lin[c] = alpha ? v / 255.0f : srgb8_to_linear(v);
-            }
-            replace(cells_[first + i], linear_to_pixel<S>(channels, lin));
-        }
-    }
-    void write_linear(std::size_t first, std::size_t n, int channels, const float* in) override {
-        for (std::size_t i = 0; i < n; ++i) replace(cells_[first + i], linear_to_pixel<S>(channels, in + i * channels));
-    }
-
-private:
-    static void replace(typename S::cell& c, const vfb_pixel& p) { S::clear(c); S::store(c, p); }
-    std::vector<typename S::cell> cells_;
-};
-
-}  // namespace detail
 
 /// \brief The virtual frame buffer: a (max_x + 1) x (max_y + 1) grid of pixels with (0, 0)
 /// at the **lower left**, kept in a storage of the caller's choice.
@@ -156,9 +46,10 @@ private:
 ///
 /// **Why type-erased.** The thesis fixed the storage at compile time for the whole program.
 /// Here one program (`rt`, the Tk widget, the grader) holds buffers of different storages,
-/// and DESIGN.md asks that a scene pick the storage it needs and no more, which is only
-/// known after the scene file is read. So vl::vfb holds its cells behind a small internal
-/// interface, chosen by name or by template argument. The cost is one virtual call per
+/// and the storage is picked by name at run time, after the program has started (the Tk
+/// widget's `-storage` option, docs/ta-guide.md; the data flow is in docs/architecture.md).
+/// So vl::vfb holds its cells behind a small internal interface (vfb_storage.hh), chosen
+/// by name or by template argument. The cost is one virtual call per
 /// put_pixel(), a few nanoseconds against the microseconds a traced ray costs. Code that
 /// needs raw speed on a known storage takes the typed path, cells<S>() or row<S>(), and
 /// load() and save() move whole rows at a time (the thesis's known problem was one pixel
@@ -171,7 +62,7 @@ public:
     /// A buffer with pixels (0, 0) to (max_x, max_y), in vl::storage_class.
     vfb(vfb_int max_x, vfb_int max_y);
     /// A buffer in the storage named `storage` (see storage_names()); throws
-    /// std::invalid_argument for an unknown name.
+    /// vl::usage_error for an unknown name.
     vfb(vfb_int max_x, vfb_int max_y, std::string_view storage);
     /// A buffer in storage S (any storage policy, including your own).
     template <class S> static vfb with_storage(vfb_int max_x, vfb_int max_y) {
@@ -225,11 +116,11 @@ public:
     /// True if the buffer's storage is S.
     template <class S> bool holds() const { return storage_->storage_type() == typeid(S); }
     /// The typed fast path: all cells, row 0 (the bottom) first; cell (x, y) is at
-    /// `y * width() + x`. Throws std::logic_error if the storage is not S.
+    /// `y * width() + x`. Throws vl::usage_error if the storage is not S.
     template <class S> std::span<typename S::cell> cells() {
         if (!holds<S>())
-            throw std::logic_error("vfb::cells: the buffer holds " + std::string(storage_name()) + ", not " +
-                                   std::string(S::name));
+            throw usage_error("vfb::cells: the buffer holds " + std::string(storage_name()) + ", not " +
+                              std::string(S::name));
         return {static_cast<typename S::cell*>(storage_->cells()), static_cast<std::size_t>(width()) * height()};
     }
     /// Row y (0 is the bottom) of the typed fast path; throws vl::vfb_range_error for a

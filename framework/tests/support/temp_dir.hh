@@ -1,5 +1,6 @@
 #pragma once
-// A temporary directory removed at the end of a test. Students need not read this file.
+// A temporary directory removed, with everything in it, at the end of a test: the one
+// way the framework's tests make scratch space. Students need not read this file.
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -22,6 +23,8 @@ public:
     temp_dir& operator=(const temp_dir&) = delete;
 
     const std::filesystem::path& path() const { return path_; }
+    /// The path of `name` inside the directory.
+    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
     /// Writes `text` to `name` inside the directory and returns its path.
     std::filesystem::path write(const std::string& name, const std::string& text) const {
         const auto p = path_ / name;
