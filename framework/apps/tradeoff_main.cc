@@ -25,6 +25,7 @@
 #include "command_line.hh"
 #include "vl/error.hh"
 #include "vl/flip.hh"
+#include "vl/image_io.hh"
 #include "vl/render.hh"
 #include "vl/rt_base_objects.hh"
 #include "vl/scene.hh"

@@ -27,7 +27,7 @@
 #include <span>
 #include <vector>
 
-#include "vl/image_io.hh"
+#include "vl/image.hh"
 
 namespace vl {
 

@@ -19,7 +19,7 @@
 /// gray value a gray 8-bit file of the image holds, in [0, 1]. Alpha is dropped.
 #include <vector>
 
-#include "vl/image_io.hh"
+#include "vl/image.hh"
 
 namespace vl {
 
