@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
+#include "command_line.hh"
 #include "export_kit.hh"
 #include "grade.hh"
 #include "gradescope.hh"
@@ -43,10 +44,9 @@ namespace fs = std::filesystem;
 using vl::grader::grader_error;
 using vl::grader::installation;
 
-/// A mistake on the command line: printed with the command's usage.
-struct usage_error {
-    std::string message;
-};
+/// A mistake on the command line (the framework's programs' kind): printed with the
+/// command's usage.
+using vl::apps::command_line_error;
 
 using arguments = std::vector<std::string>;
 
@@ -62,7 +62,7 @@ struct command {
 std::string take_option(arguments& args, const std::string& flag) {
     for (std::size_t k = 0; k < args.size(); ++k) {
         if (args[k] == flag) {
-            if (k + 1 >= args.size()) throw usage_error{flag + " needs a value"};
+            if (k + 1 >= args.size()) throw command_line_error{flag + " needs a value"};
             std::string v = args[k + 1];
             args.erase(args.begin() + static_cast<long>(k), args.begin() + static_cast<long>(k) + 2);
             return v;
@@ -94,8 +94,8 @@ vl::grader::grade_options take_grade_options(arguments& args) {
 
 void expect_count(const arguments& args, std::size_t n) {
     for (const std::string& a : args)
-        if (a.starts_with("--")) throw usage_error{"unknown option '" + a + "'"};
-    if (args.size() != n) throw usage_error{"expected " + std::to_string(n) + " argument(s), got " + std::to_string(args.size())};
+        if (a.starts_with("--")) throw command_line_error{"unknown option '" + a + "'"};
+    if (args.size() != n) throw command_line_error{"expected " + std::to_string(n) + " argument(s), got " + std::to_string(args.size())};
 }
 
 /// Grades and writes results.json and report.html into `out`.
@@ -159,7 +159,7 @@ fs::path own_program() {
 int positive_number(const std::string& text, const std::string& what) {
     char* end = nullptr;
     const long n = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || n < 1 || n > 1024) throw usage_error{what + " needs a whole number from 1, not '" + text + "'"};
+    if (text.empty() || *end != '\0' || n < 1 || n > 1024) throw command_line_error{what + " needs a whole number from 1, not '" + text + "'"};
     return static_cast<int>(n);
 }
 
@@ -170,7 +170,7 @@ int roster_command(const installation& in, arguments args) {
     if (const auto at = std::find(args.begin(), args.end(), "--regrade"); at != args.end()) {
         auto end = at + 1;
         while (end != args.end() && !end->starts_with("-")) o.regrade.push_back(*end++);
-        if (o.regrade.empty()) throw usage_error{"--regrade needs the names of the students to grade again"};
+        if (o.regrade.empty()) throw command_line_error{"--regrade needs the names of the students to grade again"};
         args.erase(at, end);
     }
     std::string jobs = take_option(args, "-j");
@@ -185,17 +185,17 @@ int roster_command(const installation& in, arguments args) {
     const std::string shard = take_option(args, "--shard");
     o.weaker_sandbox = take_flag(args, "--weaker-sandbox");
     if (args.size() != 2 && !o.regrade.empty() && args.size() < 2)
-        throw usage_error{"give ASSIGNMENT and DIR before --regrade NAME..."};
+        throw command_line_error{"give ASSIGNMENT and DIR before --regrade NAME..."};
     expect_count(args, 2);
     const vl::grader::stage_info& stage = in.find_stage(args[0]);
     o.jobs = jobs.empty() ? usable_cpus() : positive_number(jobs, "-j");
     if (!shard.empty()) {
         const auto slash = shard.find('/');
-        if (slash == std::string::npos) throw usage_error{"--shard needs K/N (task K of N, K from 0), not '" + shard + "'"};
+        if (slash == std::string::npos) throw command_line_error{"--shard needs K/N (task K of N, K from 0), not '" + shard + "'"};
         o.shards = positive_number(shard.substr(slash + 1), "--shard's N");
         const std::string k = shard.substr(0, slash);
         o.shard = k == "0" ? 0 : positive_number(k, "--shard's K");
-        if (o.shard >= o.shards) throw usage_error{"--shard " + shard + ": K must be below N (K counts from 0)"};
+        if (o.shard >= o.shards) throw command_line_error{"--shard " + shard + ": K must be below N (K counts from 0)"};
     }
     const fs::path dir = fs::absolute(args[1]).lexically_normal();
     if (out.empty()) {
@@ -561,7 +561,7 @@ int calibrate_thresholds_command(const installation& in, arguments args) {
     std::string out = take_option(args, "--out");
     std::vector<fs::path> renderers;
     for (std::string r = take_option(args, "--renderer"); !r.empty(); r = take_option(args, "--renderer")) {
-        if (!fs::is_regular_file(r)) throw usage_error{"--renderer " + r + ": no such program"};
+        if (!fs::is_regular_file(r)) throw command_line_error{"--renderer " + r + ": no such program"};
         renderers.push_back(fs::absolute(r));
     }
     expect_count(args, 1);
@@ -602,7 +602,7 @@ int imgdiff_command(arguments args) {
         options.pixels_per_degree = std::strtod(ppd_text.c_str(), &end);
         if (end == ppd_text.c_str() || *end != '\0' || !(options.pixels_per_degree > 0) ||
             !std::isfinite(options.pixels_per_degree))
-            throw usage_error{"--ppd needs a positive number of pixels per degree, not '" + ppd_text + "'"};
+            throw command_line_error{"--ppd needs a positive number of pixels per degree, not '" + ppd_text + "'"};
     }
     const vl::image reference = read_for_imgdiff(args[0], "reference");
     const vl::image test = read_for_imgdiff(args[1], "test");
@@ -717,7 +717,7 @@ int main(int argc, char** argv) {
         if (c->run_alone) return c->run_alone(arguments(all.begin() + 1, all.end()));
         const installation in = vl::grader::load_installation();
         return c->run(in, arguments(all.begin() + 1, all.end()));
-    } catch (const usage_error& e) {
+    } catch (const command_line_error& e) {
         std::fprintf(stderr, "grader %s: %s\nusage: grader/run %s\n", c->name.c_str(), e.message.c_str(),
                      c->synopsis.c_str());
         return 2;
