@@ -19,7 +19,7 @@ double tidy(double x) { return std::round(x * 1e4) / 1e4; }
 std::string summary_text(const graded_submission& g) {
     std::string s = g.title + ": " + std::to_string(static_cast<int>(std::lround(g.score))) + " of " +
                     std::to_string(static_cast<int>(std::lround(g.max_score))) + " points.\n";
-    if (!g.built && !g.items.empty() && g.items.front().result == "refused")
+    if (!g.built && !g.items.empty() && g.items.front().result == item_result::refused)
         s += "Your code was refused, so none of it ran: see the test \"builds\" for what it may not do.\n";
     else if (!g.built)
         s += "Your code did not build: see the test \"builds\" for the compiler's first errors.\n";
@@ -52,8 +52,8 @@ std::string results_json(const graded_submission& g) {
             if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
         t["tags"] = tags;
         t["visibility"] = i.visibility;
-        t["output"] = i.passed() ? i.message : i.result + (i.message.empty() ? "" : ": " + i.message);
-        t["extra_data"] = {{"category", i.category}, {"result", i.result}, {"seconds", tidy(i.seconds)}};
+        t["output"] = i.passed() ? i.message : to_string(i.result) + (i.message.empty() ? "" : ": " + i.message);
+        t["extra_data"] = {{"category", i.category}, {"result", to_string(i.result)}, {"seconds", tidy(i.seconds)}};
         if (i.what == graded_item::kind::sweep) {
             auto curve = [](const std::vector<sweep_point>& ps) {
                 json a = json::array();
