@@ -101,4 +101,49 @@ std::string results_json(const graded_submission& g) {
 
 void write_results_json(const graded_submission& g, const std::filesystem::path& file) { replace_file(file, results_json(g)); }
 
+std::vector<std::string> gradescope_format_problems(const nlohmann::json& r) {
+    std::vector<std::string> problems;
+    auto need = [&](const nlohmann::json& j, const char* key, auto is_type, const char* type, const std::string& where) {
+        if (!j.contains(key) || !is_type(j[key])) problems.push_back(where + "\"" + key + "\" must be " + type);
+    };
+    const auto number = [](const nlohmann::json& j) { return j.is_number(); };
+    const auto string = [](const nlohmann::json& j) { return j.is_string(); };
+    const auto visibility = [](const nlohmann::json& j) {
+        return j.is_string() && (j == "hidden" || j == "after_due_date" || j == "after_published" || j == "visible");
+    };
+    need(r, "score", number, "a number", "");
+    need(r, "execution_time", number, "a number", "");
+    need(r, "output", string, "a string", "");
+    need(r, "stdout_visibility", visibility, "a visibility", "");
+    if (r.contains("leaderboard")) {
+        if (!r["leaderboard"].is_array()) problems.push_back("\"leaderboard\" must be an array");
+        else
+            for (const auto& v : r["leaderboard"])
+                if (!v.is_object() || !v.contains("name") || !v["name"].is_string() || !v.contains("value") ||
+                    !(v["value"].is_number() || v["value"].is_string()) ||
+                    (v.contains("order") && v["order"] != "asc" && v["order"] != "desc"))
+                    problems.push_back("a leaderboard entry needs a name, a value (number or text) and order asc or desc");
+    }
+    if (!r.contains("tests") || !r["tests"].is_array()) {
+        problems.push_back("\"tests\" must be an array");
+        return problems;
+    }
+    for (const auto& t : r["tests"]) {
+        const std::string where = "test " + (t.contains("name") ? t["name"].dump() : std::string("?")) + ": ";
+        need(t, "name", string, "a string", where);
+        need(t, "number", string, "a string", where);
+        need(t, "score", number, "a number", where);
+        need(t, "max_score", number, "a number", where);
+        need(t, "output", string, "a string", where);
+        need(t, "visibility", visibility, "a visibility", where);
+        need(t, "status", [](const nlohmann::json& j) { return j == "passed" || j == "failed"; }, "passed or failed",
+             where);
+        need(t, "tags", [](const nlohmann::json& j) { return j.is_array(); }, "an array", where);
+        if (t.contains("score") && t.contains("max_score") && t["score"].is_number() && t["max_score"].is_number() &&
+            (t["score"].get<double>() < 0 || t["score"].get<double>() > t["max_score"].get<double>() + 1e-9))
+            problems.push_back(where + "score outside 0..max_score");
+    }
+    return problems;
+}
+
 }  // namespace vl::grader
