@@ -83,17 +83,6 @@ void collect_failures(const pugi::xml_node& node, std::string& out, int& count) 
 
 }  // namespace
 
-const char* to_string(test_outcome::status s) {
-    switch (s) {
-        case test_outcome::status::passed: return "passed";
-        case test_outcome::status::failed: return "failed";
-        case test_outcome::status::crashed: return "crashed";
-        case test_outcome::status::timed_out: return "timed out";
-        case test_outcome::status::not_run: break;
-    }
-    return "not run";
-}
-
 bool is_public_test_file(const std::string& file) { return file.find("/assignments/") != std::string::npos; }
 
 const test_case_info& named_test(const std::vector<test_case_info>& tests, const std::string& name) {
@@ -185,12 +174,12 @@ test_outcome run_test_case(const fs::path& program, const test_case_info& expect
     o.seconds = r.seconds;
     if (!r.started) throw grader_error("the sandbox could not run the hidden tests: " + r.error);
     if (r.timed_out) {
-        o.result = test_outcome::status::timed_out;
+        o.result = item_result::timed_out;
         o.message = "the test " + r.describe(limits.wall_seconds);
         return o;
     }
     if (r.report_overflow) {
-        o.result = test_outcome::status::failed;
+        o.result = item_result::failed;
         o.message = "the test's report grew past " + std::to_string(limits.report_bytes >> 20) + " MiB";
         return o;
     }
@@ -219,10 +208,10 @@ test_outcome run_test_case(const fs::path& program, const test_case_info& expect
     if (finished)
         for (const pugi::xpath_node& w : test.select_nodes(".//Warning")) o.warnings.push_back(trim_all(w.node().text().as_string()));
     if (success && r.succeeded()) {
-        o.result = test_outcome::status::passed;
+        o.result = item_result::passed;
     } else if (r.signal != 0 || !finished || test.child("FatalErrorCondition") ||
                test.select_node(".//FatalErrorCondition")) {
-        o.result = test_outcome::status::crashed;
+        o.result = item_result::crashed;
         if (r.signal != 0 || r.exit_code != 0)
             o.message = message + "the test program was " + r.describe(limits.wall_seconds) +
                         (finished ? "" : " before the test finished");
@@ -231,7 +220,7 @@ test_outcome run_test_case(const fs::path& program, const test_case_info& expect
         else
             o.message = message + "the test program ended before the test finished";
     } else {
-        o.result = test_outcome::status::failed;
+        o.result = item_result::failed;
         o.message = message.empty() ? "the test program ended with " + r.describe(limits.wall_seconds) : message;
     }
     return o;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "item_result.hh"
 #include "sandbox.hh"
 
 namespace vl::grader {
@@ -21,16 +22,13 @@ struct test_case_info {
 
 /// \brief How one test case went.
 struct test_outcome {
-    enum class status { passed, failed, crashed, timed_out, not_run } result = status::not_run;
+    item_result result = item_result::not_run;  ///< passed, failed, crashed, timed out or not run
     std::string message;  ///< what failed, where, with which values
     double seconds = 0;
     /// The test's Catch2 warnings, in order (a sweep or chart test reports its points so);
     /// only from a genuine report of this test.
     std::vector<std::string> warnings;
 };
-
-/// "passed", "failed", "crashed", "timed out", "not run".
-const char* to_string(test_outcome::status s);
 
 /// Runs the trusted program once and returns its test cases. Throws grader_error when it
 /// cannot run, or when a hidden test fails with the reference (the test or the reference

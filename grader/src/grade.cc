@@ -139,7 +139,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     build.name = "builds";
     build.category = "build";
     build.visibility = "visible";
-    build.result = "failed";
+    build.result = item_result::failed;
     g.items.push_back(build);
     for (const rubric_category& c : r.categories) {
         std::vector<const test_case_info*> mine;
@@ -208,7 +208,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
         const build_outcome b = build_submission(sub, stage, in, work / "build", caps, {options.policy, left()});
         g.built = b.ok;
         g.items[0].seconds = b.seconds;
-        g.items[0].result = b.ok ? "passed" : b.refused ? "refused" : "failed";
+        g.items[0].result = b.ok ? item_result::passed : b.refused ? item_result::refused : item_result::failed;
         g.items[0].message = b.ok ? "" : b.errors;
         if (b.ok) {
             for (std::size_t k = 1; k < g.items.size(); ++k) {
@@ -222,9 +222,9 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     run_limits limits = r.test_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
                     const test_outcome o = b.tests_program.empty()
-                                               ? test_outcome{test_outcome::status::failed, "no test program", 0, {}}
+                                               ? test_outcome{item_result::failed, "no test program", 0, {}}
                                                : run_test_case(b.tests_program, i.test, limits, caps);
-                    i.result = to_string(o.result);
+                    i.result = o.result;
                     i.message = o.message;
                     if (i.kit_passes && i.message.empty())
                         i.message = "the untouched stubs pass this test too (it checks what the kit supplies), "
@@ -237,17 +237,17 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     run_limits limits = r.test_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
                     const test_outcome o = b.tests_program.empty()
-                                               ? test_outcome{test_outcome::status::failed, "no test program", 0, {}}
+                                               ? test_outcome{item_result::failed, "no test program", 0, {}}
                                                : run_test_case(b.tests_program, i.test, limits, caps);
                     i.seconds = o.seconds;
-                    i.result = to_string(o.result);
+                    i.result = o.result;
                     i.message = o.message;
-                    if (o.result == test_outcome::status::passed) {
+                    if (o.result == item_result::passed) {
                         const measured_points m = read_points(o.warnings);
                         i.sweep = m.sweep;
                         const sweep_verdict v = m.problem.empty() ? judge_sweep(s, m.sweep, i.reference_sweep)
                                                                   : sweep_verdict{false, "the sweep's report: " + m.problem};
-                        i.result = v.passed ? "passed" : "failed";
+                        i.result = v.passed ? item_result::passed : item_result::failed;
                         i.message = v.message;
                     }
                 } else {
@@ -257,7 +257,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     run_limits limits = r.render_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
                     const scene_outcome o = render_and_compare(b.render_program, s, i.reference_image, renders, limits, caps);
-                    i.result = o.matches ? "passed" : o.rendered ? "failed" : "crashed";
+                    i.result = o.matches ? item_result::passed : o.rendered ? item_result::failed : item_result::crashed;
                     i.message = o.message;
                     i.seconds = o.seconds;
                     i.image = o.image;
@@ -280,7 +280,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                 } else {
                     const test_outcome o = run_test_case(b.tests_program, named_test(tests, c.test), limits, caps);
                     const measured_points m = read_points(o.warnings);
-                    if (o.result != test_outcome::status::passed)
+                    if (o.result != item_result::passed)
                         gc.message = std::string("your code's curve is missing: the measurement ") + to_string(o.result) +
                                      (o.message.empty() ? "" : ": " + o.message);
                     else if (!m.problem.empty())
@@ -321,7 +321,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     }
     if (!g.built)
         for (std::size_t k = 1; k < g.items.size(); ++k)
-            g.items[k].message = g.items[0].result == "refused" ? "not run: the code was refused (see \"builds\")"
+            g.items[k].message = g.items[0].result == item_result::refused ? "not run: the code was refused (see \"builds\")"
                                                                 : "the submission did not build (see \"builds\")";
     add_up(g, r);
     // The leaderboard: a chart's point, where the category it measures has full marks.

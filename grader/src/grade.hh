@@ -9,6 +9,7 @@
 
 #include "catch_runner.hh"
 #include "install.hh"
+#include "item_result.hh"
 #include "rubric.hh"
 #include "sweeps.hh"
 
@@ -21,7 +22,7 @@ struct graded_item {
     std::vector<std::string> tags;
     long long max_units = 0;         ///< the item's share of the points, in thousandths of a point
     double score = 0, max_score = 0; ///< points (max_units / 1000, or 0)
-    std::string result = "not run";  ///< passed, failed, crashed, timed out, refused, not run
+    item_result result = item_result::not_run;
     std::string message;
     double seconds = 0;
     /// Scenes only: the submission's render, the reference's, the FLIP error map and the
@@ -32,7 +33,7 @@ struct graded_item {
     std::vector<sweep_point> sweep, reference_sweep;  ///< sweeps only: the submission's and the reference's points
     std::filesystem::path chart_svg, chart_png;       ///< sweeps only: the chart of both (when gnuplot drew it)
     bool kit_passes = false;  ///< tests only: the untouched stubs pass it, so it is worth 0
-    bool passed() const { return result == "passed"; }
+    bool passed() const { return result == item_result::passed; }
 };
 
 /// \brief A chart of the report ([[chart]] in the rubric): worth no points.

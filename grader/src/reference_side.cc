@@ -74,7 +74,7 @@ bool from_json(const json& j, reference_side& s) {
 measured_points measure(const stage_info& stage, const test_case_info& test, const rubric& r,
                         const sandbox_capabilities& caps) {
     const test_outcome o = run_test_case(stage.trusted_tests, test, r.test_limits, caps);
-    if (o.result != test_outcome::status::passed)
+    if (o.result != item_result::passed)
         throw grader_error("the hidden test '" + test.name + "' " + to_string(o.result) + " with the reference: " +
                            o.message);
     measured_points m = read_points(o.warnings);

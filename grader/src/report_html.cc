@@ -77,9 +77,9 @@ std::string points(double x) {
 
 std::string percent(double score, double max) { return max > 0 ? std::to_string(std::lround(100 * score / max)) : "-"; }
 
-std::string badge(const std::string& result) {
-    std::string cls = result == "passed" ? "ok" : result == "not run" ? "skip" : "bad";
-    return "<span class=\"badge " + cls + "\">" + escape(result) + "</span>";
+std::string badge(item_result result) {
+    std::string cls = result == item_result::passed ? "ok" : result == item_result::not_run ? "skip" : "bad";
+    return "<span class=\"badge " + cls + "\">" + escape(to_string(result)) + "</span>";
 }
 
 constexpr const char* style = R"(
@@ -134,7 +134,7 @@ std::string report_html(const graded_submission& g) {
     const graded_item& build = g.items.front();
     h << "<h2>Build " << badge(build.result) << "</h2>\n";
     if (!build.passed())
-        h << (build.result == "refused" ? "<p>Why it was refused:</p><pre>" : "<p>The first errors:</p><pre>")
+        h << (build.result == item_result::refused ? "<p>Why it was refused:</p><pre>" : "<p>The first errors:</p><pre>")
           << escape(build.message) << "</pre>\n";
     else h << "<p>Built in " << points(build.seconds) << " s, with the reference for every other stage.</p>\n";
 

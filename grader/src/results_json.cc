@@ -19,7 +19,7 @@ double tidy(double x) { return std::round(x * 1e4) / 1e4; }
 std::string summary_text(const graded_submission& g) {
     std::string s = g.title + ": " + std::to_string(static_cast<int>(std::lround(g.score))) + " of " +
                     std::to_string(static_cast<int>(std::lround(g.max_score))) + " points.\n";
-    if (!g.built && !g.items.empty() && g.items.front().result == "refused")
+    if (!g.built && !g.items.empty() && g.items.front().result == item_result::refused)
         s += "Your code was refused, so none of it ran: see the test \"builds\" for what it may not do.\n";
     else if (!g.built)
         s += "Your code did not build: see the test \"builds\" for the compiler's first errors.\n";
@@ -52,8 +52,8 @@ std::string results_json(const graded_submission& g) {
             if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
         t["tags"] = tags;
         t["visibility"] = i.visibility;
-        t["output"] = i.passed() ? i.message : i.result + (i.message.empty() ? "" : ": " + i.message);
-        t["extra_data"] = {{"category", i.category}, {"result", i.result}, {"seconds", tidy(i.seconds)}};
+        t["output"] = i.passed() ? i.message : to_string(i.result) + (i.message.empty() ? "" : ": " + i.message);
+        t["extra_data"] = {{"category", i.category}, {"result", to_string(i.result)}, {"seconds", tidy(i.seconds)}};
         if (i.what == graded_item::kind::sweep) {
             auto curve = [](const std::vector<sweep_point>& ps) {
                 json a = json::array();
@@ -100,5 +100,50 @@ std::string results_json(const graded_submission& g) {
 }
 
 void write_results_json(const graded_submission& g, const std::filesystem::path& file) { replace_file(file, results_json(g)); }
+
+std::vector<std::string> gradescope_format_problems(const nlohmann::json& r) {
+    std::vector<std::string> problems;
+    auto need = [&](const nlohmann::json& j, const char* key, auto is_type, const char* type, const std::string& where) {
+        if (!j.contains(key) || !is_type(j[key])) problems.push_back(where + "\"" + key + "\" must be " + type);
+    };
+    const auto number = [](const nlohmann::json& j) { return j.is_number(); };
+    const auto string = [](const nlohmann::json& j) { return j.is_string(); };
+    const auto visibility = [](const nlohmann::json& j) {
+        return j.is_string() && (j == "hidden" || j == "after_due_date" || j == "after_published" || j == "visible");
+    };
+    need(r, "score", number, "a number", "");
+    need(r, "execution_time", number, "a number", "");
+    need(r, "output", string, "a string", "");
+    need(r, "stdout_visibility", visibility, "a visibility", "");
+    if (r.contains("leaderboard")) {
+        if (!r["leaderboard"].is_array()) problems.push_back("\"leaderboard\" must be an array");
+        else
+            for (const auto& v : r["leaderboard"])
+                if (!v.is_object() || !v.contains("name") || !v["name"].is_string() || !v.contains("value") ||
+                    !(v["value"].is_number() || v["value"].is_string()) ||
+                    (v.contains("order") && v["order"] != "asc" && v["order"] != "desc"))
+                    problems.push_back("a leaderboard entry needs a name, a value (number or text) and order asc or desc");
+    }
+    if (!r.contains("tests") || !r["tests"].is_array()) {
+        problems.push_back("\"tests\" must be an array");
+        return problems;
+    }
+    for (const auto& t : r["tests"]) {
+        const std::string where = "test " + (t.contains("name") ? t["name"].dump() : std::string("?")) + ": ";
+        need(t, "name", string, "a string", where);
+        need(t, "number", string, "a string", where);
+        need(t, "score", number, "a number", where);
+        need(t, "max_score", number, "a number", where);
+        need(t, "output", string, "a string", where);
+        need(t, "visibility", visibility, "a visibility", where);
+        need(t, "status", [](const nlohmann::json& j) { return j == "passed" || j == "failed"; }, "passed or failed",
+             where);
+        need(t, "tags", [](const nlohmann::json& j) { return j.is_array(); }, "an array", where);
+        if (t.contains("score") && t.contains("max_score") && t["score"].is_number() && t["max_score"].is_number() &&
+            (t["score"].get<double>() < 0 || t["score"].get<double>() > t["max_score"].get<double>() + 1e-9))
+            problems.push_back(where + "score outside 0..max_score");
+    }
+    return problems;
+}
 
 }  // namespace vl::grader

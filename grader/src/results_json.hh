@@ -4,6 +4,9 @@
 /// (https://gradescope-autograders.readthedocs.io/en/latest/specs/).
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "grade.hh"
 
@@ -15,5 +18,11 @@ std::string results_json(const graded_submission& g);
 
 /// Writes results_json(g) to `file`.
 void write_results_json(const graded_submission& g, const std::filesystem::path& file);
+
+/// What in `r` breaks Gradescope's documented results.json format (the autograder
+/// specification: top-level score, execution_time, output, stdout_visibility, tests; each
+/// test's score, max_score, status, name, number, output, tags, visibility); nothing when
+/// it keeps to it. The calibration checks every grade's results.json with it.
+std::vector<std::string> gradescope_format_problems(const nlohmann::json& r);
 
 }  // namespace vl::grader

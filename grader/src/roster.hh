@@ -55,6 +55,11 @@ std::vector<roster_entry> list_submissions(const std::filesystem::path& dir, std
 /// changed submission from an unchanged one; it is no defence against a forger.
 std::string content_hash(const std::filesystem::path& submission);
 
+/// The hash of what grades a submission of `stage`: the grader program, the trusted
+/// programs and libraries, and every file of grader/hidden/NN-name (rubric, tests, scenes).
+/// A record made with another is graded again: a CSV never mixes two rubrics.
+std::string setup_hash(const installation& in, const stage_info& stage, const std::filesystem::path& grader_program);
+
 /// Grades the roster's submissions into options.out; returns the process's exit status
 /// (0: every student in this shard has a grade; 1: some grades failed through the grader,
 /// each named, and a rerun tries them again).

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "install.hh"
+#include "item_result.hh"
 #include "safe_files.hh"
 
 namespace vl::grader {
@@ -133,14 +134,16 @@ roster_record record_from_results(const fs::path& results_json, const std::strin
     for (const auto& t : j.value("tests", json::array())) {
         const std::string result = t.value("extra_data", json::object()).value("result", "");
         if (t.value("number", "") == "0") build_result = result;
-        if (result == "passed") ++r.passed;
-        else if (result == "failed") ++r.failed;
-        else if (result == "crashed") ++r.crashed;
-        else if (result == "timed out") ++r.timed_out;
-        else if (result == "refused") ++r.refused;
-        else ++r.not_run;
+        switch (from_string(result).value_or(item_result::not_run)) {
+            case item_result::passed: ++r.passed; break;
+            case item_result::failed: ++r.failed; break;
+            case item_result::crashed: ++r.crashed; break;
+            case item_result::timed_out: ++r.timed_out; break;
+            case item_result::refused: ++r.refused; break;
+            case item_result::not_run: ++r.not_run; break;
+        }
     }
-    r.verdict = r.built ? "graded" : build_result == "refused" ? "refused" : "did not build";
+    r.verdict = r.built ? "graded" : from_string(build_result) == item_result::refused ? "refused" : "did not build";
     for (const auto& v : j.value("leaderboard", json::array()))
         if (v.contains("value") && v["value"].is_number())
             r.leaderboard.push_back({v.value("name", ""), v.value("order", "desc"), v["value"].get<double>()});

@@ -8,14 +8,11 @@
 #include <signal.h>
 #include <sys/mount.h>
 #include <sys/prctl.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cctype>
 #include <cstdlib>
 #include <cerrno>
 #include <chrono>
@@ -23,34 +20,15 @@
 #include <sstream>
 
 #include "install.hh"
+#include "sandbox_parts.hh"
 
 namespace vl::grader {
 
 namespace fs = std::filesystem;
+using namespace sandbox_parts;
 
 namespace {
 
-constexpr int report_fd_number = 3;
-constexpr int status_fd_number = 4;  // bubblewrap's --json-status-fd
-constexpr int first_mount_fd = 5;
-// As root, the mounts are first bound here, in a private mount namespace of the child, so
-// that bubblewrap, started as nobody, can reach them whatever folders (a 0700 mktemp -d)
-// lie above them on the host. The host sees only this empty folder.
-constexpr const char* staging_dir = "/run/vl-grader-mounts";
-
-/// `fd` moved to a number of 64 or more (close-on-exec), so that the child's dup2 onto
-/// 0..63 never overwrites a descriptor it has still to duplicate.
-int high_fd(int fd) {
-    if (fd < 0 || fd >= 64) return fd;
-    const int moved = fcntl(fd, F_DUPFD_CLOEXEC, 64);
-    close(fd);
-    return moved;
-}
-
-void set_limit(int resource, rlim_t value) {
-    const rlimit r{value, value};
-    setrlimit(resource, &r);
-}
 
 /// Writes `text` to stderr with write(2): the only output allowed between fork and exec.
 void child_says(const char* a, const char* b = "") {
@@ -99,42 +77,6 @@ bool try_unshare_in_child(int flags) {
     int status = 0;
     return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
-
-/// The system folders every sandbox gets, read-only: the toolchain and what it needs.
-void system_mounts(std::vector<std::string>& a) {
-    a.insert(a.end(), {"--ro-bind", "/usr", "/usr", "--symlink", "usr/bin", "/bin", "--symlink", "usr/sbin", "/sbin",
-                       "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64"});
-    for (const char* etc : {"/etc/ld.so.cache", "/etc/alternatives"})
-        if (fs::exists(etc)) a.insert(a.end(), {"--ro-bind", etc, etc});
-}
-
-/// `text` (an argument) with every mount's inside path replaced by its host path, longest
-/// first: the weaker sandbox has no mounts, so its programs are given host paths.
-std::string to_host(std::string text, const std::vector<mount>& mounts, const fs::path& scratch) {
-    std::vector<std::pair<std::string, std::string>> map;
-    for (const mount& m : mounts) map.push_back({m.inside, m.host.string()});
-    map.push_back({"/scratch", scratch.string()});
-    std::sort(map.begin(), map.end(), [](const auto& a, const auto& b) { return a.first.size() > b.first.size(); });
-    for (const auto& [inside, host] : map) {
-        for (std::size_t at = text.find(inside); at != std::string::npos; at = text.find(inside, at + host.size())) {
-            const std::size_t end = at + inside.size();
-            const bool starts = at == 0 || (at >= 2 && text[at - 2] == '-') ||  // -I/vl/contract
-                                !(std::isalnum(static_cast<unsigned char>(text[at - 1])) || text[at - 1] == '/' ||
-                                  text[at - 1] == '_' || text[at - 1] == '.');
-            const bool ends = end == text.size() || !(std::isalnum(static_cast<unsigned char>(text[end])) ||
-                                                      text[end] == '_' || text[end] == '-' || text[end] == '.');
-            if (!starts || !ends) {
-                at += 1;
-                if (at >= text.size()) break;
-                continue;
-            }
-            text.replace(at, inside.size(), host);
-        }
-    }
-    return text;
-}
-
-std::atomic<unsigned> weak_scratch_counter{0};
 
 }  // namespace
 
@@ -231,81 +173,24 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
     const run_limits& l = rq.limits;
 
     // Everything the child needs is made before fork: after it, only async-signal-safe calls.
-    std::vector<int> mount_fds;
-    std::vector<bool> mount_is_dir;
-    std::vector<std::string> staged;  // as root: where each mount is attached first
+    child_command cmd;
+    cmd.cwd = rq.cwd;
     auto close_all = [&] {
-        for (int fd : mount_fds) close(fd);
+        for (int fd : cmd.mount_fds) close(fd);
     };
-    std::vector<std::string> args;
-    std::string cwd = rq.cwd;
-    fs::path weak_scratch;
     if (bwrap) {
-        args = {caps.bwrap.string(), "--unshare-all", "--unshare-user", "--disable-userns", "--die-with-parent",
-                "--new-session", "--uid", std::to_string(caps.uid), "--gid", std::to_string(caps.gid),
-                "--json-status-fd", std::to_string(status_fd_number), "--clearenv"};
-        system_mounts(args);
-        args.insert(args.end(), {"--proc", "/proc", "--dev", "/dev", "--size", std::to_string(l.scratch_bytes),
-                                 "--tmpfs", "/tmp", "--size", std::to_string(l.scratch_bytes), "--tmpfs", "/scratch"});
-        for (const mount& m : rq.mounts) {
-            const int fd = high_fd(open(m.host.c_str(), O_PATH | O_NOFOLLOW | O_CLOEXEC));
-            struct stat st {};
-            if (fd < 0 || fstat(fd, &st) != 0 || !(S_ISREG(st.st_mode) || S_ISDIR(st.st_mode))) {
-                const int err = errno;
-                if (fd >= 0) close(fd);
-                close_all();
-                result.error = "cannot mount " + m.host.string() + ": " +
-                               (fd < 0 ? std::strerror(err) : "not a regular file or folder");
-                return result;
-            }
-            mount_fds.push_back(fd);
-            mount_is_dir.push_back(S_ISDIR(st.st_mode));
-            if (caps.drop_to_nobody) {
-                staged.push_back(std::string(staging_dir) + "/" + std::to_string(staged.size()));
-                args.insert(args.end(), {m.writable ? "--bind" : "--ro-bind", staged.back(), m.inside});
-            } else {
-                args.insert(args.end(), {m.writable ? "--bind-fd" : "--ro-bind-fd",
-                                         std::to_string(first_mount_fd + static_cast<int>(mount_fds.size()) - 1),
-                                         m.inside});
-            }
-        }
-        for (const auto& [target, link] : rq.symlinks) args.insert(args.end(), {"--symlink", target, link});
-        for (const std::string& e : rq.environment) {
-            const auto eq = e.find('=');
-            args.insert(args.end(), {"--setenv", e.substr(0, eq), e.substr(eq + 1)});
-        }
-        // The root and /dev are bubblewrap's own tmpfs, uncapped: read-only once every mount
-        // point is made, so /scratch and /tmp are the only places to write.
-        args.insert(args.end(), {"--remount-ro", "/dev", "--remount-ro", "/"});
-        args.insert(args.end(), {"--chdir", rq.cwd, "--", "/usr/bin/prlimit",
-                                 "--nproc=" + std::to_string(l.processes), "--"});
-        args.insert(args.end(), rq.argv.begin(), rq.argv.end());
+        result.error = bubblewrap_command(rq, caps, cmd);
+        if (!result.error.empty()) return result;
     } else if (weak) {
-        weak_scratch = fs::temp_directory_path() /
-                       ("vl-grader-scratch-" + std::to_string(getpid()) + "-" + std::to_string(weak_scratch_counter++));
-        std::error_code ec;
-        fs::remove_all(weak_scratch, ec);
-        fs::create_directories(weak_scratch, ec);
-        for (const auto& [target, link] : rq.symlinks) {
-            const std::string t = target.starts_with("/proc/self/fd/") ? "/dev/fd/" + target.substr(14) : target;
-            fs::create_symlink(to_host(t, rq.mounts, weak_scratch), to_host(link, rq.mounts, weak_scratch), ec);
-        }
-        for (const std::string& a : rq.argv) args.push_back(to_host(a, rq.mounts, weak_scratch));
-        cwd = to_host(rq.cwd, rq.mounts, weak_scratch);
-        fs::create_directories(weak_scratch / "tmp", ec);
+        weaker_command(rq, cmd);
     } else {
-        args = rq.argv;
+        cmd.args = rq.argv;
+        cmd.environment = rq.environment;
     }
     std::vector<char*> argv, env;
-    for (auto& a : args) argv.push_back(a.data());
+    for (auto& a : cmd.args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    std::vector<std::string> env_strings = bwrap ? std::vector<std::string>{} : rq.environment;
-    if (weak)
-        for (std::string& e : env_strings) {
-            if (e == "TMPDIR=/tmp") e = "TMPDIR=" + (weak_scratch / "tmp").string();
-            else if (e.starts_with("HOME=")) e = "HOME=" + to_host(e.substr(5), rq.mounts, weak_scratch);
-        }
-    for (auto& e : env_strings) env.push_back(e.data());
+    for (auto& e : cmd.environment) env.push_back(e.data());
     env.push_back(nullptr);
 
     int out_pipe[2] = {-1, -1}, report_pipe[2] = {-1, -1}, status_pipe[2] = {-1, -1};
@@ -322,7 +207,6 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
     }
     for (int* fd : {&out_pipe[0], &out_pipe[1], &report_pipe[0], &report_pipe[1], &status_pipe[0], &status_pipe[1]})
         *fd = high_fd(*fd);
-    const double cpu = l.cpu_seconds > 0 ? l.cpu_seconds : l.wall_seconds + 1;
     const bool drop = bwrap && caps.drop_to_nobody;
     // A program reopens its fd 3 as /dev/fd/3 (Catch2's -o, rt's out.png): as nobody, it may
     // only if nobody owns the pipe.
@@ -348,35 +232,29 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         // bubblewrap closes the descriptors it binds; as root they are attached by open_tree
         // below and never reach it (close-on-exec), so no host folder stays open inside.
         if (!drop)
-            for (std::size_t k = 0; k < mount_fds.size(); ++k) dup2(mount_fds[k], first_mount_fd + static_cast<int>(k));
-        if (rq.sandboxed) {
-            set_limit(RLIMIT_CPU, static_cast<rlim_t>(cpu + 0.999));
-            if (caps.address_limit && l.memory_bytes > 0) set_limit(RLIMIT_AS, l.memory_bytes);
-            set_limit(RLIMIT_FSIZE, l.file_bytes);
-            set_limit(RLIMIT_NOFILE, 256);
-            set_limit(RLIMIT_CORE, 0);
-        }
-        if (drop && !staged.empty()) {
+            for (std::size_t k = 0; k < cmd.mount_fds.size(); ++k) dup2(cmd.mount_fds[k], first_mount_fd + static_cast<int>(k));
+        if (rq.sandboxed) set_limits(l, caps);
+        if (drop && !cmd.staged.empty()) {
             // Detached copies of the mounts first (a bind from another namespace is not
             // allowed), then a private namespace in which they are attached under staging_dir.
             int trees[64];
-            for (std::size_t k = 0; k < staged.size() && k < 64; ++k) {
-                trees[k] = open_tree(mount_fds[k], "", OPEN_TREE_CLONE | OPEN_TREE_CLOEXEC | AT_EMPTY_PATH);
+            for (std::size_t k = 0; k < cmd.staged.size() && k < 64; ++k) {
+                trees[k] = open_tree(cmd.mount_fds[k], "", OPEN_TREE_CLONE | OPEN_TREE_CLOEXEC | AT_EMPTY_PATH);
                 if (trees[k] < 0) {
                     child_says("sandbox: cannot stage a mount: ", std::strerror(errno));
                     _exit(125);
                 }
             }
-            if (staged.size() > 64 || unshare(CLONE_NEWNS) != 0 ||
+            if (cmd.staged.size() > 64 || unshare(CLONE_NEWNS) != 0 ||
                 ::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 ||
                 ::mount("tmpfs", staging_dir, "tmpfs", MS_NOSUID | MS_NODEV, "mode=0755,size=64k") != 0) {
                 child_says("sandbox: cannot stage the mounts: ", std::strerror(errno));
                 _exit(125);
             }
-            for (std::size_t k = 0; k < staged.size(); ++k) {
-                const bool made = mount_is_dir[k] ? mkdir(staged[k].c_str(), 0755) == 0
-                                                  : close(open(staged[k].c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644)) == 0;
-                if (!made || move_mount(trees[k], "", AT_FDCWD, staged[k].c_str(), MOVE_MOUNT_F_EMPTY_PATH) != 0) {
+            for (std::size_t k = 0; k < cmd.staged.size(); ++k) {
+                const bool made = cmd.mount_is_dir[k] ? mkdir(cmd.staged[k].c_str(), 0755) == 0
+                                                  : close(open(cmd.staged[k].c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644)) == 0;
+                if (!made || move_mount(trees[k], "", AT_FDCWD, cmd.staged[k].c_str(), MOVE_MOUNT_F_EMPTY_PATH) != 0) {
                     child_says("sandbox: cannot stage a mount: ", std::strerror(errno));
                     _exit(125);
                 }
@@ -390,12 +268,12 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
             int flags = (caps.network_isolated ? CLONE_NEWNET : 0);
             if (flags != 0 && unshare(flags) != 0) _exit(125);
         }
-        if (chdir(cwd.c_str()) != 0 && !bwrap) {
+        if (chdir(cmd.cwd.c_str()) != 0 && !bwrap) {
             child_says("sandbox: cannot enter the working folder: ", std::strerror(errno));
             _exit(125);
         }
         // Nothing else the grader inherited or opened reaches the program.
-        const int keep = bwrap ? first_mount_fd + (drop ? 0 : static_cast<int>(mount_fds.size())) : report_fd_number + 1;
+        const int keep = bwrap ? first_mount_fd + (drop ? 0 : static_cast<int>(cmd.mount_fds.size())) : report_fd_number + 1;
         close_range(static_cast<unsigned>(keep), ~0U, 0);
         execve(argv[0], argv.data(), env.data());
         child_says("sandbox: cannot run the program: ", std::strerror(errno));
@@ -467,7 +345,7 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (weak) {
         std::error_code ec;
-        fs::remove_all(weak_scratch, ec);
+        fs::remove_all(cmd.scratch, ec);
     }
     result.started = true;
     if (result.timed_out || result.report_overflow) return result;

@@ -41,7 +41,7 @@ void print_summary(std::ostream& s, const graded_submission& g, const std::files
       << " (" << (g.max_score > 0 ? std::lround(100 * g.score / g.max_score) : 0) << "%)  " << dim << "in "
       << fixed(g.seconds) << " s" << reset << "\n";
     if (!g.built) {
-        const bool refused = g.items.front().result == "refused";
+        const bool refused = g.items.front().result == item_result::refused;
         s << "  " << red << (refused ? "refused:" : "did not build:") << reset << " " << first_line(g.items.front().message)
           << "\n";
         if (refused) {
@@ -60,7 +60,7 @@ void print_summary(std::ostream& s, const graded_submission& g, const std::files
         for (const graded_item& i : g.items) {
             if (i.passed() || i.what == graded_item::kind::build) continue;
             if (++shown > 8) continue;
-            s << "  " << red << i.result << reset << ": " << i.name << "\n      " << dim << first_line(i.message)
+            s << "  " << red << to_string(i.result) << reset << ": " << i.name << "\n      " << dim << first_line(i.message)
               << reset << "\n";
         }
         if (shown > 8) s << "  ... and " << shown - 8 << " more in the report\n";
