@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numbers>
 #include <ostream>
 #include <utility>
 
@@ -25,6 +26,18 @@ std::string triangle_problem(const point& a, const point& b, const point& c) {
     if (!((ab % ac).length() > 1e-12 * ab.length() * ac.length()))
         return "its vertices a, b and c are on one line (or two coincide): it has no area";
     return "";
+}
+
+bool below(const point& a, const point& b) { return a.x < b.x && a.y < b.y && a.z < b.z; }
+
+const char* unusable_matrix(const matrix& m) {
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            if (!std::isfinite(m(r, c))) return "it has an element that is not finite";
+    if (m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1)
+        return "it is not affine (its bottom row must be 0 0 0 1)";
+    if (m.determinant() == 0) return "it is singular (it has no inverse: is a scale 0?)";
+    return nullptr;
 }
 
 }  // namespace vl::checks
@@ -121,6 +134,95 @@ void polygon_params::write(std::ostream& s) const {
     const full_precision digits(s);
     s << "POLYGON { vertices";
     for (const point& p : vertices) s << " (" << p.x << ", " << p.y << ", " << p.z << ')';
+}
+
+std::vector<scene_reader::property> frac_sphere_params::properties(scene_reader& in) {
+    return {{"center", [this, &in] {
+                 const source_location where = in.peek().where;
+                 center = in.read_point("center of FRACSPH").homogenized();
+                 if (!checks::finite(center)) in.fail(where, "center of FRACSPH must be a finite point (w not 0)");
+             }},
+            {"radius", [this, &in] { radius = in.read_positive("radius of FRACSPH"); }},
+            {"depth", [this, &in] { depth = in.read_int("depth of FRACSPH", 0, max_depth); }},
+            {"ratio", [this, &in] {
+                 const source_location where = in.peek().where;
+                 ratio = in.read_number("ratio of FRACSPH");
+                 if (!(ratio > 0 && ratio < 1))
+                     in.fail(where, "ratio of FRACSPH must be between 0 and 1 (each level smaller), found " +
+                                        std::to_string(ratio));
+             }}};
+}
+
+void frac_sphere_params::write(std::ostream& s) const {
+    const full_precision digits(s);
+    s << "FRACSPH { center " << center.x << ' ' << center.y << ' ' << center.z << " radius " << radius << " depth "
+      << depth << " ratio " << ratio;
+}
+
+std::vector<scene_reader::property> box_params::properties(scene_reader& in, source_location& where) {
+    where = in.peek().where;
+    return {{"min", [this, &in, &where] {
+                 where = in.peek().where;
+                 lo = in.read_point("min of BOX").homogenized();
+                 if (!checks::finite(lo)) in.fail(where, "min of BOX must be a finite point (w not 0)");
+             }},
+            {"max", [this, &in, &where] {
+                 where = in.peek().where;
+                 hi = in.read_point("max of BOX").homogenized();
+                 if (!checks::finite(hi)) in.fail(where, "max of BOX must be a finite point (w not 0)");
+             }}};
+}
+
+void box_params::write(std::ostream& s) const {
+    const full_precision digits(s);
+    s << "BOX { min " << lo.x << ' ' << lo.y << ' ' << lo.z << " max " << hi.x << ' ' << hi.y << ' ' << hi.z;
+}
+
+int read_bvh_leaf_size(scene_reader& in, int leaf_size) {
+    in.expect('{', "after BVH");
+    if (in.peek().type == token::kind::word && in.peek().text == "leaf_size") {
+        in.next();
+        return in.read_int("leaf_size of BVH", 1, 64);
+    }
+    return leaf_size;
+}
+
+matrix read_transform_step(scene_reader& in, const token& step, const transform_step_makers& make) {
+    if (step.text == "scale") {
+        const double x = in.read_number("x of scale");
+        const double y = in.read_number("y of scale");
+        const double z = in.read_number("z of scale");
+        return make.scale(x, y, z);
+    }
+    if (step.text == "rotate") {
+        const double x = in.read_number("x of the axis of rotate");
+        const double y = in.read_number("y of the axis of rotate");
+        const double z = in.read_number("z of the axis of rotate");
+        const vector axis(x, y, z);
+        if (axis.x == 0 && axis.y == 0 && axis.z == 0) in.fail(step.where, "the axis of rotate must not be zero");
+        return make.rotate(axis, in.read_number("degrees of rotate") * std::numbers::pi / 180);
+    }
+    if (step.text == "translate") {
+        const double x = in.read_number("x of translate");
+        const double y = in.read_number("y of translate");
+        const double z = in.read_number("z of translate");
+        return make.translate(vector(x, y, z));
+    }
+    if (step.text == "matrix") {
+        double e[16];
+        for (double& x : e) x = in.read_number("element of matrix");
+        return matrix(e[0], e[1], e[2], e[3], e[4], e[5], e[6], e[7], e[8], e[9], e[10], e[11], e[12], e[13], e[14],
+                      e[15]);
+    }
+    in.fail(step.where,
+            "expected scale, rotate, translate, matrix or an object in TRANSFORM, found '" + step.text + "'");
+}
+
+void write_transform_matrix(std::ostream& s, const matrix& to_world) {
+    const full_precision digits(s);
+    s << "TRANSFORM { matrix";
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) s << ' ' << to_world(r, c);
 }
 
 }  // namespace vl::shapes

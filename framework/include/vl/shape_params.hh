@@ -43,6 +43,11 @@ bool usable_normal(const vector& n);
 /// not finite, or vertices on one line, which means the sine of the angle at a is below
 /// 1e-12 (the cross product has no usable direction).
 std::string triangle_problem(const point& a, const point& b, const point& c);
+/// True when `a` is below `b` in x, y and z: the corners of a box with volume.
+bool below(const point& a, const point& b);
+/// Why `m` cannot place an object (an element not finite, not affine, singular), or nullptr
+/// when it can.
+const char* unusable_matrix(const matrix& m);
 
 }  // namespace vl::checks
 
@@ -93,5 +98,54 @@ struct polygon_params {
     /// `POLYGON { vertices (X, Y, Z) ...`.
     void write(std::ostream& s) const;
 };
+
+/// `FRACSPH { center X Y Z  radius R  depth D  ratio Q ... }`.
+struct frac_sphere_params {
+    static constexpr int max_depth = 7;
+
+    point center;
+    double radius = 1;
+    int depth = 0;
+    double ratio = 0.5;
+
+    /// `center` (a finite point, homogenized), `radius` (> 0), `depth` (0 to max_depth)
+    /// and `ratio` (between 0 and 1), for scene_reader::read_block().
+    std::vector<scene_reader::property> properties(scene_reader& in);
+    /// `FRACSPH { center X Y Z radius R depth D ratio Q`.
+    void write(std::ostream& s) const;
+};
+
+/// `BOX { min X Y Z  max X Y Z ... }`.
+struct box_params {
+    point lo, hi;
+
+    /// `min` and `max` (finite points, homogenized), for scene_reader::read_block().
+    /// `where` becomes where the last corner read starts (where the block starts when
+    /// none is), for the caller's check that min is below max (checks::below()).
+    std::vector<scene_reader::property> properties(scene_reader& in, source_location& where);
+    /// `BOX { min X Y Z max X Y Z`.
+    void write(std::ostream& s) const;
+};
+
+/// Reads the start of `BVH { leaf_size K  OBJECT ... }`: the `{` and, when it follows,
+/// `leaf_size K` (1 to 64). Returns K, or `leaf_size` when the key is not there.
+int read_bvh_leaf_size(scene_reader& in, int leaf_size);
+
+/// How a TRANSFORM's steps become matrices: stage 01's functions (the framework does not
+/// depend on a stage).
+struct transform_step_makers {
+    matrix (*scale)(double sx, double sy, double sz);
+    matrix (*rotate)(const vector& axis, double radians);
+    matrix (*translate)(const vector& offset);
+};
+
+/// Reads the values of the TRANSFORM step `step` (whose word has been read):
+/// `scale X Y Z`, `rotate X Y Z DEGREES` (a non-zero axis), `translate X Y Z` or
+/// `matrix M11 ... M44` (row by row), and returns its matrix; fails at the word for any
+/// other.
+matrix read_transform_step(scene_reader& in, const token& step, const transform_step_makers& make);
+
+/// `TRANSFORM { matrix M11 ... M44` (row by row).
+void write_transform_matrix(std::ostream& s, const matrix& to_world);
 
 }  // namespace vl::shapes
