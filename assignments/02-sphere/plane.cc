@@ -5,8 +5,8 @@
 #include <ostream>
 
 #include "stage_02.hh"
-#include "vl/shape_params.hh"
 #include "vl/not_implemented.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage02 {
 

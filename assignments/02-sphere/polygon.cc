@@ -13,8 +13,8 @@
 
 #include "stage_02.hh"
 #include "vl/convex_polygon.hh"
-#include "vl/shape_params.hh"
 #include "vl/not_implemented.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage02 {
 

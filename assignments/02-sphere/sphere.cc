@@ -4,8 +4,8 @@
 #include <ostream>
 
 #include "stage_02.hh"
-#include "vl/shape_params.hh"
 #include "vl/not_implemented.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage02 {
 
