@@ -1,24 +1,16 @@
 // The infinite plane: see stage_02.hh for what each function must do, and README.md for
-// hints. read() and write() are done; the functions marked TODO are yours.
+// hints. read() and write() are done (vl/shape_params.hh); the functions marked TODO
+// are yours.
 #include <cmath>
-#include <limits>
 #include <ostream>
 
 #include "stage_02.hh"
 #include "vl/not_implemented.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage02 {
 
 namespace {
-
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-bool finite(const vector& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-// A normal that unit() can make unit: not zero, not so large or small that its length
-// overflows or underflows.
-bool usable_normal(const vector& n) {
-    const vector u = vector(n.x, n.y, n.z).unit();
-    return finite(n) && finite(u) && std::fabs(u.length() - 1) < 1e-9;
-}
 
 /// \brief The points p with (p - point_on_plane) . normal == 0.
 class plane final : public primitive {
@@ -36,26 +28,12 @@ public:
     // box") are already right.
 
     void read(scene_reader& in) override {
-        point p = point_;
-        vector n = normal_;
-        read_with_surface(in, {{"point", [&] {
-                                    const source_location where = in.peek().where;
-                                    p = in.read_point("point of PLANE").homogenized();
-                                    if (!finite(p)) in.fail(where, "point of PLANE must be a finite point (w not 0)");
-                                }},
-                               {"normal", [&] {
-                                    const source_location where = in.peek().where;
-                                    n = in.read_vector("normal of PLANE");
-                                    n.w = 0;
-                                    if (!usable_normal(n)) in.fail(where, "normal of PLANE must not be the zero vector");
-                                }}});
-        set_geometry(p, n);
+        shapes::plane_params p{point_, normal_};
+        read_with_surface(in, p.properties(in));
+        set_geometry(p.point_on_plane, p.normal);
     }
     void write(std::ostream& s) const override {
-        const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
-        s << "PLANE { point " << point_.x << ' ' << point_.y << ' ' << point_.z << " normal " << normal_.x << ' '
-          << normal_.y << ' ' << normal_.z;
-        s.precision(old_precision);
+        shapes::plane_params{point_, normal_}.write(s);
         write_surface(s);
         s << " }";
     }
@@ -86,7 +64,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {
-    if (!finite(point_on_plane.homogenized()) || !usable_normal(normal))
+    if (!checks::finite(point_on_plane.homogenized()) || !checks::usable_normal(normal))
         throw usage_error("make_plane: the point must be finite and the normal a finite, non-zero vector");
     return std::make_unique<plane>(point_on_plane, normal);
 }

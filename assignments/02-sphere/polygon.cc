@@ -1,6 +1,6 @@
 // The convex planar polygon: see stage_02.hh for what each function must do, and
-// README.md for hints. read(), write() and the checks of the vertices are done; the
-// functions marked TODO are yours.
+// README.md for hints. read(), write() and the checks of the vertices are done
+// (vl/shape_params.hh, vl/convex_polygon.hh); the functions marked TODO are yours.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -14,6 +14,7 @@
 #include "stage_02.hh"
 #include "vl/convex_polygon.hh"
 #include "vl/not_implemented.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage02 {
 
@@ -43,28 +44,12 @@ public:
     }
 
     void read(scene_reader& in) override {
-        std::vector<point> vertices = vertices_;
-        read_with_surface(in, {{"vertices", [&] {
-                                    if (in.peek().text != "(")
-                                        in.fail_expected("'(' to start a vertex of POLYGON (each vertex is written (x, y, z))");
-                                    std::vector<source_location> where;
-                                    vertices.clear();
-                                    while (in.peek().type == token::kind::punct && in.peek().text == "(") {
-                                        where.push_back(in.peek().where);
-                                        vertices.push_back(in.read_point("vertex of POLYGON").homogenized());
-                                    }
-                                    if (const auto problem = find_polygon_problem(vertices)) {
-                                        const std::size_t at = std::min(problem->vertex, where.size() - 1);
-                                        in.fail(where[at], "this POLYGON is not convex and planar: " + problem->message);
-                                    }
-                                }}});
-        set_geometry(std::move(vertices));
+        shapes::polygon_params p{vertices_};
+        read_with_surface(in, p.properties(in));
+        set_geometry(std::move(p.vertices));
     }
     void write(std::ostream& s) const override {
-        const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
-        s << "POLYGON { vertices";
-        for (const point& p : vertices_) s << " (" << p.x << ", " << p.y << ", " << p.z << ')';
-        s.precision(old_precision);
+        shapes::polygon_params{vertices_}.write(s);
         write_surface(s);
         s << " }";
     }

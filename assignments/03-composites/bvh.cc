@@ -13,6 +13,7 @@
 #include "vl/bounds.hh"
 #include "vl/not_implemented.hh"
 #include "vl/scene_reader.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage03 {
 
@@ -54,11 +55,7 @@ public:
     }
 
     void read(scene_reader& in) override {
-        in.expect('{', "after BVH");
-        if (in.peek().type == token::kind::word && in.peek().text == "leaf_size") {
-            in.next();
-            leaf_size_ = in.read_int("leaf_size of BVH", 1, 64);
-        }
+        leaf_size_ = shapes::read_bvh_leaf_size(in, leaf_size_);
         while (!in.accept('}')) in.read_child(*this);
     }
     void write(std::ostream& s) const override {

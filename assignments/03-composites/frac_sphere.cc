@@ -1,7 +1,7 @@
 // The fractal spheres: see stage_03.hh for what each function must do, and README.md for
-// hints. Reading, writing and checking the values are done; build() is yours.
+// hints. Reading, writing and checking the values are done (vl/shape_params.hh); build()
+// is yours.
 #include <cmath>
-#include <limits>
 #include <ostream>
 #include <string>
 
@@ -10,14 +10,13 @@
 #include "vl/not_implemented.hh"
 #include "vl/primitive.hh"
 #include "vl/scene_reader.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage03 {
 
 namespace {
 
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-constexpr int max_depth = 7;
+constexpr int max_depth = shapes::frac_sphere_params::max_depth;
 constexpr int no_parent = -1;
 
 /// The six axis directions; direction k ^ 1 is the opposite of direction k.
@@ -42,38 +41,19 @@ public:
     }
 
     void read(scene_reader& in) override {
-        point center = center_;
-        double radius = radius_, ratio = ratio_;
-        int depth = depth_;
-        std::vector<scene_reader::property> properties{
-            {"center", [&] {
-                 const source_location where = in.peek().where;
-                 center = in.read_point("center of FRACSPH").homogenized();
-                 if (!finite(center)) in.fail(where, "center of FRACSPH must be a finite point (w not 0)");
-             }},
-            {"radius", [&] { radius = in.read_positive("radius of FRACSPH"); }},
-            {"depth", [&] { depth = in.read_int("depth of FRACSPH", 0, max_depth); }},
-            {"ratio", [&] {
-                 const source_location where = in.peek().where;
-                 ratio = in.read_number("ratio of FRACSPH");
-                 if (!(ratio > 0 && ratio < 1))
-                     in.fail(where, "ratio of FRACSPH must be between 0 and 1 (each level smaller), found " +
-                                        std::to_string(ratio));
-             }}};
+        shapes::frac_sphere_params p{center_, radius_, depth_, ratio_};
+        std::vector<scene_reader::property> properties = p.properties(in);
         add_surface_properties(properties, in, surface_, "FRACSPH");
         in.read_block("FRACSPH", properties);
-        center_ = center;
-        radius_ = radius;
-        depth_ = depth;
-        ratio_ = ratio;
+        center_ = p.center;
+        radius_ = p.radius;
+        depth_ = p.depth;
+        ratio_ = p.ratio;
         build();
     }
 
     void write(std::ostream& s) const override {
-        const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
-        s << "FRACSPH { center " << center_.x << ' ' << center_.y << ' ' << center_.z << " radius " << radius_
-          << " depth " << depth_ << " ratio " << ratio_;
-        s.precision(old_precision);
+        shapes::frac_sphere_params{center_, radius_, depth_, ratio_}.write(s);
         write_surface(s, surface_);
         s << " }";
     }
@@ -102,7 +82,7 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_frac_sphere(const point& center, double radius, int depth, double ratio) {
-    if (!finite(center.homogenized()) || !std::isfinite(radius) || !(radius > 0))
+    if (!checks::finite(center.homogenized()) || !std::isfinite(radius) || !(radius > 0))
         throw usage_error("make_frac_sphere: the center must be finite and the radius a finite number > 0");
     if (depth < 0 || depth > max_depth)
         throw usage_error("make_frac_sphere: the depth must be from 0 to 7, not " + std::to_string(depth));

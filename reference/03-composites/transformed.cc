@@ -1,27 +1,18 @@
 // Reference: the transformed instance (see assignments/03-composites/stage_03.hh).
 #include <cmath>
-#include <limits>
-#include <numbers>
 #include <ostream>
 
 #include "stage_01.hh"
 #include "stage_03.hh"
 #include "vl/scene_reader.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage03 {
 
 namespace {
 
-/// Why `m` cannot place an object, or nullptr when it can.
-const char* unusable(const matrix& m) {
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c)
-            if (!std::isfinite(m(r, c))) return "it has an element that is not finite";
-    if (m(3, 0) != 0 || m(3, 1) != 0 || m(3, 2) != 0 || m(3, 3) != 1)
-        return "it is not affine (its bottom row must be 0 0 0 1)";
-    if (m.determinant() == 0) return "it is singular (it has no inverse: is a scale 0?)";
-    return nullptr;
-}
+/// TRANSFORM's steps, made by stage 01.
+const shapes::transform_step_makers steps{stage01::scale_matrix, stage01::rotate_matrix, stage01::translate_matrix};
 
 /// \brief One child seen through a matrix: rays go to the child's space, hits come back.
 class transformed final : public rtab_composite {
@@ -69,35 +60,10 @@ public:
             const token t = in.peek();
             if (t.type != token::kind::word || registry::valid_name(t.text)) break;
             in.next();
-            matrix step;
-            if (t.text == "scale") {
-                const double x = in.read_number("x of scale");
-                const double y = in.read_number("y of scale");
-                const double z = in.read_number("z of scale");
-                step = stage01::scale_matrix(x, y, z);
-            } else if (t.text == "rotate") {
-                const double x = in.read_number("x of the axis of rotate");
-                const double y = in.read_number("y of the axis of rotate");
-                const double z = in.read_number("z of the axis of rotate");
-                const vector axis(x, y, z);
-                if (axis.x == 0 && axis.y == 0 && axis.z == 0) in.fail(t.where, "the axis of rotate must not be zero");
-                step = stage01::rotate_matrix(axis, in.read_number("degrees of rotate") * std::numbers::pi / 180);
-            } else if (t.text == "translate") {
-                const double x = in.read_number("x of translate");
-                const double y = in.read_number("y of translate");
-                const double z = in.read_number("z of translate");
-                step = stage01::translate_matrix(vector(x, y, z));
-            } else if (t.text == "matrix") {
-                double e[16];
-                for (double& x : e) x = in.read_number("element of matrix");
-                step = matrix(e[0], e[1], e[2], e[3], e[4], e[5], e[6], e[7], e[8], e[9], e[10], e[11], e[12], e[13],
-                              e[14], e[15]);
-            } else {
-                in.fail(t.where, "expected scale, rotate, translate, matrix or an object in TRANSFORM, found '" +
-                                     t.text + "'");
-            }
+            const matrix step = shapes::read_transform_step(in, t, steps);
             m = step * m;  // each step acts after the ones before it
-            if (const char* why = unusable(m)) in.fail(t.where, std::string("TRANSFORM cannot use this matrix: ") + why);
+            if (const char* why = checks::unusable_matrix(m))
+                in.fail(t.where, std::string("TRANSFORM cannot use this matrix: ") + why);
         }
         if (in.peek().type == token::kind::punct && in.peek().text == "}")
             in.fail_expected("the object of TRANSFORM (such as SPHERE { }) before '}'");
@@ -108,11 +74,7 @@ public:
     }
 
     void write(std::ostream& s) const override {
-        const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
-        s << "TRANSFORM { matrix";
-        for (int r = 0; r < 4; ++r)
-            for (int c = 0; c < 4; ++c) s << ' ' << to_world_(r, c);
-        s.precision(old_precision);
+        shapes::write_transform_matrix(s, to_world_);
         for (const auto& c : children_) s << ' ' << *c;
         s << " }";
     }
@@ -156,7 +118,7 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component> child, const matrix& object_to_world) {
-    if (const char* why = unusable(object_to_world))
+    if (const char* why = checks::unusable_matrix(object_to_world))
         throw usage_error(std::string("make_transformed: the matrix cannot place an object: ") + why);
     return std::make_unique<transformed>(std::move(child), object_to_world);
 }

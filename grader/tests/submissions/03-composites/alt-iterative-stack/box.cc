@@ -9,13 +9,11 @@
 #include "vl/bounds.hh"
 #include "vl/primitive.hh"
 #include "vl/scene_reader.hh"
+#include "vl/shape_params.hh"
 
 namespace vl::stage03 {
 
 namespace {
-
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-bool below(const point& a, const point& b) { return a.x < b.x && a.y < b.y && a.z < b.z; }
 
 /// \brief An axis-aligned box made of its six faces, tested as a box first.
 class box final : public rtab_composite {
@@ -64,30 +62,18 @@ public:
     }
 
     void read(scene_reader& in) override {
-        point lo = lo_, hi = hi_;
-        source_location where = in.peek().where;
-        std::vector<scene_reader::property> properties{
-            {"min", [&] {
-                 where = in.peek().where;
-                 lo = in.read_point("min of BOX").homogenized();
-                 if (!finite(lo)) in.fail(where, "min of BOX must be a finite point (w not 0)");
-             }},
-            {"max", [&] {
-                 where = in.peek().where;
-                 hi = in.read_point("max of BOX").homogenized();
-                 if (!finite(hi)) in.fail(where, "max of BOX must be a finite point (w not 0)");
-             }}};
+        shapes::box_params p{lo_, hi_};
+        source_location where;
+        std::vector<scene_reader::property> properties = p.properties(in, where);
         add_surface_properties(properties, in, surface_, "BOX");
         in.read_block("BOX", properties);
-        if (!below(lo, hi)) in.fail(where, "min of BOX must be below max in x, y and z (a box has volume)");
-        set_geometry(lo, hi);
+        if (!checks::below(p.lo, p.hi))
+            in.fail(where, "min of BOX must be below max in x, y and z (a box has volume)");
+        set_geometry(p.lo, p.hi);
     }
 
     void write(std::ostream& s) const override {
-        const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
-        s << "BOX { min " << lo_.x << ' ' << lo_.y << ' ' << lo_.z << " max " << hi_.x << ' ' << hi_.y << ' '
-          << hi_.z;
-        s.precision(old_precision);
+        shapes::box_params{lo_, hi_}.write(s);
         write_surface(s, surface_);
         s << " }";
     }
@@ -142,9 +128,9 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_box(const point& lo, const point& hi) {
-    if (!finite(lo.homogenized()) || !finite(hi.homogenized()))
+    if (!checks::finite(lo.homogenized()) || !checks::finite(hi.homogenized()))
         throw usage_error("make_box: both corners must be finite points");
-    if (!below(lo.homogenized(), hi.homogenized()))
+    if (!checks::below(lo.homogenized(), hi.homogenized()))
         throw usage_error("make_box: lo must be below hi in x, y and z (a box has volume)");
     return std::make_unique<box>(lo, hi);
 }
