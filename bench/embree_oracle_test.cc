@@ -9,7 +9,7 @@
 // misses it too. A candidate hit or missed within float round-off ("grazing": the ray
 // passes the sphere's rim, a triangle's edge, or a triangle's plane edge-on, or t is at
 // zero_t) may go either way. The counts of each outcome are printed.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <cstdio>

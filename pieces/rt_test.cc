@@ -1,6 +1,6 @@
 // Tests of the rt program and the render driver it runs, with every piece this build links
 // (labelled framework: they test the framework's rt_main and render driver).
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cstdio>
 #include <fstream>

@@ -2,7 +2,7 @@
 // build links: on a tiny scene it writes its files and prints one line per point, and
 // the jittered pattern's FLIP falls as samples per pixel grow. No timings are checked:
 // only counts (rays, tests), which are the same on every machine.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cstdio>
 #include <fstream>

@@ -1,3 +1,3 @@
 // The Catch2 main() shared by every test executable (compiled once). Students need not read it.
 #define CATCH_CONFIG_MAIN
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"

@@ -1,6 +1,6 @@
 // Charts by gnuplot (vl/chart.hh): the numbers file and the script always, the SVG and
 // the PNG with gnuplot, which tools/setup installs.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <limits>

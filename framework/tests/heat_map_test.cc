@@ -2,7 +2,7 @@
 // tick labels, and the picture draw_heat_map makes.
 #include "vl/heat_map.hh"
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <vector>

@@ -5,7 +5,7 @@
 
 #include "image_test_support.hh"
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <algorithm>
 #include <cstring>

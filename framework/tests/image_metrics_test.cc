@@ -9,7 +9,7 @@
 
 #include "image_test_support.hh"
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <array>
 #include <filesystem>

@@ -3,7 +3,7 @@
 // directory (support/temp_dir.hh). Students need not read this file.
 #include "support/temp_dir.hh"
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cstdio>
 #include <cstdlib>

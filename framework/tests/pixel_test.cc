@@ -2,7 +2,7 @@
 // the z-buffer rule and antialiasing.
 #include "vl/pixel.hh"
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // pixel's coordinates.
 #include "vl/random.hh"
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <random>

@@ -1,5 +1,5 @@
 // Tests of the registry of scene type names.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include "support/probes.hh"
 #include "vl/error.hh"

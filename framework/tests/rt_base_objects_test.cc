@@ -1,5 +1,5 @@
 // Tests of the ray, intersection rules, counters and the composite bases.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 #include <sstream>
 #include <thread>
 

@@ -1,6 +1,6 @@
 // Tests of the scene reader: tokens, typed reads, includes, and the error for every kind
 // of malformed input (each must name FILE:LINE:COL, say what was expected, never crash).
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include "support/probes.hh"
 #include "support/temp_dir.hh"

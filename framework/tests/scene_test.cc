@@ -1,5 +1,5 @@
 // Tests of the scene model: defaults, every setting, lights, objects.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include "support/probes.hh"
 #include "vl/registry.hh"

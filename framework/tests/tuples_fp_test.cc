@@ -10,7 +10,7 @@
 // operation that raises one kills the test with SIGFPE, which Catch2 reports as a failure.
 // Each test computes inside a trap_guard and checks the results after it, with the traps
 // off again (Catch2's own comparisons are none of our business).
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <fenv.h>
 

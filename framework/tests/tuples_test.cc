@@ -6,7 +6,7 @@
 //  - column vectors: the thesis writes `p * m` and `r * m`; we write `m * p` and `m * r`;
 //  - the thesis's "protected" point operations live in vl::homogeneous and are found only
 //    after `using namespace vl::homogeneous;`.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <bit>
 #include <cmath>

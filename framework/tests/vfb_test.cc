@@ -4,7 +4,7 @@
 
 #include "image_test_support.hh"
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 using namespace vl;
 

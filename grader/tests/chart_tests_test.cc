@@ -1,7 +1,7 @@
 // The hidden chart tests ([chart]) of stages 01 and 03, run with the reference (the
 // trusted test programs): their points parse, their series and x values are the fixed
 // ones the report lines up (never a time), and a second run gives the same points.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <cstdio>

@@ -1,7 +1,7 @@
 // The grader's policy (grader/src/policy.hh): what it refuses in object symbols and in a
 // student's preprocessed lines, and what it must let through (ordinary code, system
 // headers, words in strings). A false refusal scores honest work 0, so both sides matter.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <set>
 #include <string>

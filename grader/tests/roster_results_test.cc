@@ -1,6 +1,6 @@
 // A roster's records, summary CSV and leaderboard (roster_results.hh): what an instructor
 // opens in a spreadsheet must say exactly what each grade said.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <filesystem>
 #include <fstream>

@@ -1,5 +1,5 @@
 // Sweeps: reading a sweep test's points, and judging them against the rubric's stable range.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include "sweeps.hh"
 

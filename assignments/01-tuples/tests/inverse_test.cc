@@ -1,6 +1,6 @@
 // Public tests of the 4x4 inverse (inverse.cc). The contract, with the error bound these
 // tests check, is stage_01.hh.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // Public tests of the pixel sample patterns (samplers.cc). The contract is stage_01.hh;
 // the interface is vl::sampler in vl/camera.hh.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <exception>

@@ -1,7 +1,7 @@
 // Renders each public scene of stage 01 with this build's pieces and compares it with the
 // reference image stored beside it (the instructor's reference pieces rendered it). You need not read this file to do the assignment: when one of these
 // fails, render the scene with rt and look at it next to the .png.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <filesystem>
 #include <string>

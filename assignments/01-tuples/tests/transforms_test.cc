@@ -1,5 +1,5 @@
 // Public tests of the transform builders (transforms.cc). The contract is stage_01.hh.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <numbers>

@@ -1,5 +1,5 @@
 // Public tests of the plane (stage_02.hh, plane.cc). Run them with `ctest -L 02-sphere`.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 #include <cmath>
 
 #include "test_support.hh"

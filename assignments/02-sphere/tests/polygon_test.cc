@@ -1,5 +1,5 @@
 // Public tests of the convex polygon (stage_02.hh, polygon.cc). Run them with `ctest -L 02-sphere`.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 #include <algorithm>
 #include <cmath>
 #include <memory>

@@ -1,6 +1,6 @@
 // Public tests of reading and writing stage 02's objects in scene files. Run them with
 // `ctest -L 02-sphere`.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 #include <string>
 #include <vector>
 

@@ -1,5 +1,5 @@
 // Public tests of the triangle (stage_02.hh, triangle.cc). Run them with `ctest -L 02-sphere`.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 #include <cmath>
 #include <memory>
 #include <numbers>

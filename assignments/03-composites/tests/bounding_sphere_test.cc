@@ -1,7 +1,7 @@
 // Public tests of the bounding sphere (stage_03.hh, bounding_sphere.cc). Run them with
 // `build/student/stage_03_public_test "[boundsph]"`. The children are the tests' own
 // spheres (tests/test_support.hh), which count how often they are intersected.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <vector>

@@ -1,7 +1,7 @@
 // Public tests of the box (stage_03.hh, box.cc). Run them with
 // `build/student/stage_03_public_test "[box]"`. The answer key is the slab method
 // (Kay and Kajiya) in long double, written in this file.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <limits>

@@ -1,7 +1,7 @@
 // Public tests of the bounding volume hierarchy (stage_03.hh, bvh.cc). Run them with
 // `build/student/stage_03_public_test "[bvh]"`. The children are the tests' own spheres
 // (tests/test_support.hh); the answer key is a LIST of copies of them.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <algorithm>
 #include <cmath>

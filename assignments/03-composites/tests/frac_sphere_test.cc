@@ -1,7 +1,7 @@
 // Public tests of the fractal spheres (stage_03.hh, frac_sphere.cc). Run them with
 // `build/student/stage_03_public_test "[fracsph]"`. The answer key is a fractal built by
 // the test itself from the contract's description, in long double.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <vector>

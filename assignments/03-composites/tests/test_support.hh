@@ -6,7 +6,7 @@
 /// in long double and count how often they were intersected, so a test can tell exactly
 /// which children your composite tested.
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <charconv>
 #include <cmath>

@@ -2,7 +2,7 @@
 // `build/student/stage_03_public_test "[transformed]"`. The matrices are written out
 // element by element, and the answer keys (an ellipsoid, a moved sphere) are solved in
 // world space in this file, without any matrix.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <numbers>

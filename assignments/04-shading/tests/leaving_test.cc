@@ -13,7 +13,7 @@
 // colour E of each emitter (a ray aimed straight at it).
 //
 // The critical angle of glass of ior 1.5: sin a_c = 1 / 1.5, a_c = 41.81 degrees.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <numbers>

@@ -3,7 +3,7 @@
 // filter, lights behind a surface, no clamping. Run them with
 // `build/student/stage_04_public_test "[local]"`. Every test here traces at depth 0 and
 // places its lights where no shadow can fall, so only the local light is seen.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 

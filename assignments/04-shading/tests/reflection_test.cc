@@ -10,7 +10,7 @@
 // made dull (ksr 0), and it reads each emitter's colour from your own tracer (a ray aimed
 // straight at it). So these tests depend on your reflection alone, not on your ambient
 // term.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 

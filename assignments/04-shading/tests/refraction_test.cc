@@ -17,7 +17,7 @@
 //
 // Where F is checked, the expected value is between Schlick's approximation and the exact
 // Fresnel equations (both are accepted), with a tolerance that covers both.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <algorithm>
 #include <cmath>

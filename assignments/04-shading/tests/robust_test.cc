@@ -7,7 +7,7 @@
 // zero_t 0 must look like the same scene at the origin with the default zero_t (1e-6),
 // where round-off (about 1e-16) is far below zero_t and cannot cause acne. So they fail
 // only when a secondary ray hits the surface it leaves.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <exception>
 #include <string>

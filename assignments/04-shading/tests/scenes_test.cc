@@ -1,7 +1,7 @@
 // Renders each public scene of stage 04 with this build's pieces and compares it with the
 // reference image stored beside it (the instructor's reference pieces rendered it). When one fails, render the scene with rt and look at it next to the
 // .png. (The grader renders these scenes too, as graded scenes of their own.)
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <filesystem>
 

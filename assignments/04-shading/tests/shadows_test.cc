@@ -6,7 +6,7 @@
 // when the scene has no light at all (the ambient term), and a point the blocker does
 // not hide must get what it gets when the blocker is removed. So these tests fail only
 // for a shadow bug, whatever your diffuse term does.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 

@@ -19,7 +19,7 @@
 /// - **Neutral terms.** Everything a test does not look at is switched off: no ambient,
 ///   black background, depth 0, no lights, as the test says in its comments.
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <charconv>
 #include <cmath>

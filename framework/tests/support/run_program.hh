@@ -2,7 +2,7 @@
 // Tests' helper: run a program through the shell and keep what it printed.
 #include <sys/wait.h>
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cstdio>
 #include <string>

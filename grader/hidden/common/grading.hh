@@ -20,7 +20,7 @@
 /// The grader prints each failed check under the test's name; it removes this file's and
 /// the hidden tests' file names and line numbers, which the student does not have.
 
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <charconv>
 #include <cmath>

@@ -2,7 +2,7 @@
 // Each TEST_CASE is one graded item; its tags name the rubric category. The answer key is
 // a long-double pinhole model written here (hidden_support.hh), never the submission's
 // look_at_matrix.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <limits>

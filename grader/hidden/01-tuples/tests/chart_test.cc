@@ -9,7 +9,7 @@
 // converged picture is the mean over a 16 x 16 grid in every pixel. y is the mean LDR-FLIP
 // of each image against the converged one; x is samples per pixel (the cost: rays per
 // pixel), never a time. 64 x 48 pixels, so the whole test takes well under a second.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <array>
 #include <cmath>

@@ -2,7 +2,7 @@
 // TEST_CASE is one graded item; its tags name the rubric category. The matrices are built
 // here, element by element or in long double, never with the submission's transforms; the
 // answer key is a long-double inverse (hidden_support.hh).
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <string>

@@ -3,7 +3,7 @@
 // patterns are checked for the properties the contract states (ranges, cells, repeatability,
 // uniformity, independence) over fixed seeds, with limits a sound generator never reaches:
 // never for particular random values.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <cstdint>

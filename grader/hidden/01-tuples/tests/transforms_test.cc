@@ -1,7 +1,7 @@
 // Hidden tests of stage 01's transform builders (grader only; students never see this
 // file). Each TEST_CASE is one graded item; its tags name the rubric category. The answer
 // keys are long-double formulas written here, never another function of the submission.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <string>

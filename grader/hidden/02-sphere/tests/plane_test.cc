@@ -1,7 +1,7 @@
 // Hidden tests of stage 02's plane (plane.cc). Each TEST_CASE is one graded item; the tag
 // [plane] puts it in the rubric's "planes" category. Every expected answer comes from the
 // long-double formulas in hidden_support.hh, never from another of your objects.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <limits>

@@ -2,7 +2,7 @@
 // item; the tag [polygon] puts it in the rubric's "polygons" category. Every expected
 // answer comes from the long-double formulas in hidden_support.hh, never from another of
 // your objects; on an edge shared by two polygons either may report the hit.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <algorithm>
 #include <cmath>

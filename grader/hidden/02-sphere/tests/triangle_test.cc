@@ -2,7 +2,7 @@
 // the tag [triangle] puts it in the rubric's "triangles" category. Every expected answer
 // comes from the long-double formulas in hidden_support.hh, never from another of your
 // objects; on an edge shared by two triangles either may report the hit.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <exception>

@@ -3,7 +3,7 @@
 // category. A bounding sphere's children are probes (hidden_support.hh): objects your code
 // has never seen, which compute their own hits in long double and count their own tests.
 // The fractal spheres are checked against a long-double model of the shape written here.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 // [box] puts it in the rubric's "box" category. Every expected answer comes from the
 // long-double slab computation below, never from another of your objects; the faces
 // themselves are stage 02's polygons (the reference's, in grading).
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <limits>

@@ -3,7 +3,7 @@
 // probes (hidden_support.hh): objects your code has never seen, which compute their own
 // hits in long double and count their own tests. The answer key is the brute force over
 // the same probes: what a plain LIST of them returns.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <atomic>
 #include <cmath>

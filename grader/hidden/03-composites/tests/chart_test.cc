@@ -4,7 +4,7 @@
 // series names are fixed, so the submission's points line up with the reference's; the
 // cost is counted (intersect() calls plus bound tests), never timed. A structure that
 // throws is left out, so the others' curves still show.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <algorithm>
 #include <cmath>

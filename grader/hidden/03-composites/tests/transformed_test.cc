@@ -3,7 +3,7 @@
 // child is a probe (hidden_support.hh) that computes its own hits in long double and counts
 // its own tests; every expected answer comes from the long-double matrices and formulas
 // below (the world-space ellipsoid of a transformed sphere), never from stage 01's code.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <limits>

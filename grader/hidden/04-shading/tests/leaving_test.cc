@@ -12,7 +12,7 @@
 // 3, where every secondary ray ends on an emitter or in the black background after one
 // bounce. Where F is checked, any value between Schlick's approximation and the exact
 // Fresnel equations, widened by 0.02, passes.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <memory>

@@ -4,7 +4,7 @@
 // in the rubric's "local" category. Every trace is at depth 0 (no reflection or
 // refraction) and no object stands between a point and a light, so only the local light
 // is seen; every expected colour is computed below in long double.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <memory>

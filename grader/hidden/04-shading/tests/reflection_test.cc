@@ -7,7 +7,7 @@
 // against what your tracer shows for the emitter itself. A "watcher" object that is never
 // hit writes down every ray the tracer asks the scene about, so the tests can read the
 // reflected ray itself. Every expected value is computed below in long double.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <algorithm>
 #include <array>

@@ -10,7 +10,7 @@
 // bounce, so the answer is the same at any depth from 1 on. Where F is checked, any value
 // between Schlick's approximation and the exact Fresnel equations, widened by 0.02,
 // passes (the contract allows either). Every expected value is computed in long double.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <memory>

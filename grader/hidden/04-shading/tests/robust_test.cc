@@ -6,7 +6,7 @@
 // the default zero_t, on nearly every ray of a grid; a tracer used by two threads at once
 // must give exactly the colours it gives one thread. So a mistake in a shading term alone
 // does not cost points here; a secondary ray that hits the surface it leaves does.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <atomic>
 #include <cmath>

@@ -5,7 +5,7 @@
 // same point of a bare floor lit by only the lights that reach it: a shadowed point loses
 // exactly the light that is blocked, and an object beyond the light takes nothing. So a
 // mistake in the local light itself costs points in the local light's tests, not here.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <memory>

@@ -16,7 +16,7 @@
 //   (w_r + w_t < ksr + kst, read with a green emitter on each side). Which way the rays
 //   go is graded by the other tests, so a wrong mirror direction or a normal not negated
 //   inside does not fail this sweep.
-#include <catch2/catch.hpp>
+#include "vl/catch.hh"
 
 #include <cmath>
 #include <functional>
