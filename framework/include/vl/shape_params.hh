@@ -55,8 +55,8 @@ namespace vl::shapes {
 
 /// `SPHERE { center X Y Z  radius R ... }`.
 struct sphere_params {
-    point center;
-    double radius = 1;
+    point center;       ///< `center`, homogenized
+    double radius = 1;  ///< `radius`, > 0
 
     /// `center` (a finite point, homogenized) and `radius` (> 0), read into this struct.
     std::vector<scene_reader::property> properties(scene_reader& in);
@@ -66,7 +66,7 @@ struct sphere_params {
 
 /// `PLANE { point X Y Z  normal X Y Z ... }`.
 struct plane_params {
-    point point_on_plane;
+    point point_on_plane;  ///< `point`, homogenized
     vector normal;  ///< as given (not unit), so that write() writes what was read
 
     /// `point` (a finite point, homogenized) and `normal` (w set to 0; a usable normal).
@@ -77,7 +77,9 @@ struct plane_params {
 
 /// `TRIANGLE { a X Y Z  b X Y Z  c X Y Z ... }`.
 struct triangle_params {
-    point a, b, c;
+    point a;  ///< `a`, homogenized
+    point b;  ///< `b`, homogenized
+    point c;  ///< `c`, homogenized
 
     /// `a`, `b` and `c`, each homogenized; check() them once all are read.
     std::vector<scene_reader::property> properties(scene_reader& in);
@@ -90,7 +92,7 @@ struct triangle_params {
 
 /// `POLYGON { vertices (X, Y, Z) (X, Y, Z) (X, Y, Z) ... ... }`.
 struct polygon_params {
-    std::vector<point> vertices;
+    std::vector<point> vertices;  ///< `vertices` in order, each homogenized
 
     /// `vertices`: one or more `(x, y, z)`, each homogenized, that find_polygon_problem()
     /// accepts; a scene file's error points at the vertex at fault.
@@ -101,12 +103,12 @@ struct polygon_params {
 
 /// `FRACSPH { center X Y Z  radius R  depth D  ratio Q ... }`.
 struct frac_sphere_params {
-    static constexpr int max_depth = 7;
+    static constexpr int max_depth = 7;  ///< the deepest `depth` accepted
 
-    point center;
-    double radius = 1;
-    int depth = 0;
-    double ratio = 0.5;
+    point center;       ///< `center`, homogenized
+    double radius = 1;  ///< `radius`, > 0
+    int depth = 0;      ///< `depth`, 0 to max_depth
+    double ratio = 0.5; ///< `ratio`, between 0 and 1
 
     /// `center` (a finite point, homogenized), `radius` (> 0), `depth` (0 to max_depth)
     /// and `ratio` (between 0 and 1), for scene_reader::read_block().
@@ -117,7 +119,8 @@ struct frac_sphere_params {
 
 /// `BOX { min X Y Z  max X Y Z ... }`.
 struct box_params {
-    point lo, hi;
+    point lo;  ///< `min`, homogenized
+    point hi;  ///< `max`, homogenized
 
     /// `min` and `max` (finite points, homogenized), for scene_reader::read_block().
     /// `where` becomes where the last corner read starts (where the block starts when
@@ -134,9 +137,9 @@ int read_bvh_leaf_size(scene_reader& in, int leaf_size);
 /// How a TRANSFORM's steps become matrices: stage 01's functions (the framework does not
 /// depend on a stage).
 struct transform_step_makers {
-    matrix (*scale)(double sx, double sy, double sz);
-    matrix (*rotate)(const vector& axis, double radians);
-    matrix (*translate)(const vector& offset);
+    matrix (*scale)(double sx, double sy, double sz);      ///< stage 01's scale_matrix()
+    matrix (*rotate)(const vector& axis, double radians);  ///< stage 01's rotate_matrix()
+    matrix (*translate)(const vector& offset);             ///< stage 01's translate_matrix()
 };
 
 /// Reads the values of the TRANSFORM step `step` (whose word has been read):
