@@ -8,6 +8,8 @@
 #include <ostream>
 #include <set>
 
+#include "full_precision.hh"
+
 namespace vl {
 
 void add_surface_properties(std::vector<scene_reader::property>& properties, scene_reader& in, surface& s,
@@ -26,7 +28,7 @@ void add_surface_properties(std::vector<scene_reader::property>& properties, sce
 
 void write_surface(std::ostream& out, const surface& s) {
     const surface d;
-    const auto old_precision = out.precision(std::numeric_limits<double>::max_digits10);
+    const detail::full_precision digits(out);
     if (s.clr != d.clr) out << " color (" << s.clr.r << ", " << s.clr.g << ", " << s.clr.b << ", " << s.clr.a << ')';
     if (s.kdr != d.kdr) out << " kdr " << s.kdr;
     if (s.ksr != d.ksr) out << " ksr " << s.ksr;
@@ -35,7 +37,6 @@ void write_surface(std::ostream& out, const surface& s) {
     if (s.n != d.n) out << " n " << s.n;
     if (s.ior != d.ior) out << " ior " << s.ior;
     if (s.zero_t != d.zero_t) out << " zero_t " << s.zero_t;
-    out.precision(old_precision);
 }
 
 void primitive::read_with_surface(scene_reader& in, std::vector<scene_reader::property> properties) {

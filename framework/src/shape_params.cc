@@ -8,6 +8,7 @@
 #include <ostream>
 #include <utility>
 
+#include "full_precision.hh"
 #include "vl/convex_polygon.hh"
 
 namespace vl::checks {
@@ -44,29 +45,23 @@ const char* unusable_matrix(const matrix& m) {
 
 namespace vl::shapes {
 
+using detail::full_precision;
+
 namespace {
 
-/// Sets `s` to max_digits10 digits and back.
-class full_precision {
-public:
-    explicit full_precision(std::ostream& s) : s_(s), old_(s.precision(std::numeric_limits<double>::max_digits10)) {}
-    ~full_precision() { s_.precision(old_); }
-    full_precision(const full_precision&) = delete;
-    full_precision& operator=(const full_precision&) = delete;
-
-private:
-    std::ostream& s_;
-    std::streamsize old_;
-};
+/// Reads the point `what` ("center of SPHERE"), homogenized; fails where it starts when it
+/// is not finite.
+point read_finite_point(scene_reader& in, const std::string& what) {
+    const source_location where = in.peek().where;
+    const point p = in.read_point(what).homogenized();
+    if (!checks::finite(p)) in.fail(where, what + " must be a finite point (w not 0)");
+    return p;
+}
 
 }  // namespace
 
 std::vector<scene_reader::property> sphere_params::properties(scene_reader& in) {
-    return {{"center", [this, &in] {
-                 const source_location where = in.peek().where;
-                 center = in.read_point("center of SPHERE").homogenized();
-                 if (!checks::finite(center)) in.fail(where, "center of SPHERE must be a finite point (w not 0)");
-             }},
+    return {{"center", [this, &in] { center = read_finite_point(in, "center of SPHERE"); }},
             {"radius", [this, &in] { radius = in.read_positive("radius of SPHERE"); }}};
 }
 
@@ -76,11 +71,7 @@ void sphere_params::write(std::ostream& s) const {
 }
 
 std::vector<scene_reader::property> plane_params::properties(scene_reader& in) {
-    return {{"point", [this, &in] {
-                 const source_location where = in.peek().where;
-                 point_on_plane = in.read_point("point of PLANE").homogenized();
-                 if (!checks::finite(point_on_plane)) in.fail(where, "point of PLANE must be a finite point (w not 0)");
-             }},
+    return {{"point", [this, &in] { point_on_plane = read_finite_point(in, "point of PLANE"); }},
             {"normal", [this, &in] {
                  const source_location where = in.peek().where;
                  normal = in.read_vector("normal of PLANE");
@@ -137,11 +128,7 @@ void polygon_params::write(std::ostream& s) const {
 }
 
 std::vector<scene_reader::property> frac_sphere_params::properties(scene_reader& in) {
-    return {{"center", [this, &in] {
-                 const source_location where = in.peek().where;
-                 center = in.read_point("center of FRACSPH").homogenized();
-                 if (!checks::finite(center)) in.fail(where, "center of FRACSPH must be a finite point (w not 0)");
-             }},
+    return {{"center", [this, &in] { center = read_finite_point(in, "center of FRACSPH"); }},
             {"radius", [this, &in] { radius = in.read_positive("radius of FRACSPH"); }},
             {"depth", [this, &in] { depth = in.read_int("depth of FRACSPH", 0, max_depth); }},
             {"ratio", [this, &in] {
@@ -163,13 +150,11 @@ std::vector<scene_reader::property> box_params::properties(scene_reader& in, sou
     where = in.peek().where;
     return {{"min", [this, &in, &where] {
                  where = in.peek().where;
-                 lo = in.read_point("min of BOX").homogenized();
-                 if (!checks::finite(lo)) in.fail(where, "min of BOX must be a finite point (w not 0)");
+                 lo = read_finite_point(in, "min of BOX");
              }},
             {"max", [this, &in, &where] {
                  where = in.peek().where;
-                 hi = in.read_point("max of BOX").homogenized();
-                 if (!checks::finite(hi)) in.fail(where, "max of BOX must be a finite point (w not 0)");
+                 hi = read_finite_point(in, "max of BOX");
              }}};
 }
 

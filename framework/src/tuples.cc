@@ -9,6 +9,7 @@
 #include <limits>
 #include <ostream>
 
+#include "full_precision.hh"
 #include "tuple_io.hh"
 
 namespace vl {
@@ -16,10 +17,9 @@ namespace vl {
 namespace tuple_io {
 
 void write4(std::ostream& s, const char* name, double a, double b, double c, double d) {
-    const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
+    const detail::full_precision digits(s);
     if (*name != '\0') s << name << ' ';
     s << '(' << a << ", " << b << ", " << c << ", " << d << ')';
-    s.precision(old_precision);
 }
 
 void skip_label(std::istream& s) {
