@@ -31,6 +31,17 @@ function(vl_grader_contract_dirs out)
   set(${out} ${dirs} PARENT_SCOPE)
 endfunction()
 
+# vl_grader_reference_sources(NN-name OUT): the reference's .cc files and the stage's
+# registration, which the reference shares with the stubs (vl_stage_registration).
+function(vl_grader_reference_sources stage out)
+  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
+  vl_stage_registration(${stage} registration)
+  if(registration AND NOT EXISTS ${PROJECT_SOURCE_DIR}/reference/${stage}/register.cc)
+    list(APPEND sources ${registration})
+  endif()
+  set(${out} ${sources} PARENT_SCOPE)
+endfunction()
+
 # vl_grader_reference_library(NN-name): vl_grader_reference_NN, the stage's reference,
 # whatever VL_PIECES this build uses for vl_stage_NN. When vl_stage_NN is built from the
 # reference, this library is made of its objects (the same files are not compiled twice);
@@ -42,7 +53,7 @@ function(vl_grader_reference_library stage)
   if(from_reference)
     set(sources $<TARGET_OBJECTS:vl_stage_${number}_objects>)
   else()
-    file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
+    vl_grader_reference_sources(${stage} sources)
   endif()
   add_library(vl_grader_reference_${number} STATIC ${sources})
   target_include_directories(vl_grader_reference_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
@@ -57,7 +68,7 @@ endfunction()
 # from it every piece a graded scene does not take from the submission.
 function(vl_grader_oracle_library stage)
   string(SUBSTRING ${stage} 0 2 number)
-  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/reference/${stage}/*.cc)
+  vl_grader_reference_sources(${stage} sources)
   add_library(vl_grader_oracle_${number} STATIC ${sources})
   target_compile_definitions(vl_grader_oracle_${number} PRIVATE stage${number}=reference_stage${number})
   target_include_directories(vl_grader_oracle_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})

@@ -30,6 +30,19 @@ set(VL_PIECES ${vl_default_pieces} CACHE STRING "Which pieces to build: referenc
 set_property(CACHE VL_PIECES PROPERTY STRINGS reference student)
 set_property(GLOBAL PROPERTY VL_STAGES "")
 
+# vl_stage_registration(NN-name OUT): assignments/NN-name/register.cc, the one copy of the
+# stage's scene-file names (vl::stageNN::register_stage_NN), or "" when the stage has none.
+# The stubs hold it; the reference, the grader's reference and oracle libraries and every
+# graded submission compile that same file (the grader replaces a submission's copy).
+function(vl_stage_registration stage out)
+  set(file ${PROJECT_SOURCE_DIR}/assignments/${stage}/register.cc)
+  if(EXISTS ${file})
+    set(${out} ${file} PARENT_SCOPE)
+  else()
+    set(${out} "" PARENT_SCOPE)
+  endif()
+endfunction()
+
 # vl_stage(NN name [LIBS libs...]): declares stage NN-name and builds its library
 # vl_stage_NN from the pieces this build uses for it (linked with LIBS), compiled once as
 # the object library vl_stage_NN_objects; its code may use the contracts of every stage
@@ -66,6 +79,12 @@ function(vl_stage number name)
   file(GLOB sources CONFIGURE_DEPENDS ${source_dir}/*.cc)
   if(NOT sources)
     message(FATAL_ERROR "stage ${number}: no .cc files in ${source_dir}")
+  endif()
+  # The stage's registration (assignments/NN-name/register.cc) is part of what is handed
+  # out: pieces without their own copy (the reference) use it.
+  vl_stage_registration(${number}-${name} registration)
+  if(registration AND NOT EXISTS ${source_dir}/register.cc)
+    list(APPEND sources ${registration})
   endif()
   add_library(vl_stage_${number}_objects OBJECT ${sources})
   # The contract header comes first, so a copy of it in source_dir is never used.

@@ -90,6 +90,15 @@ std::string chart_stem(const std::string& test) {
     return out.substr(0, 80);
 }
 
+/// The rubric entry an item was made from, found by `matches`. Items are made from the
+/// rubric, so it is always there; a miss is the grader's own fault, said as such.
+template <class Entry, class Match>
+const Entry& rubric_entry(const std::vector<Entry>& entries, Match matches, const std::string& what) {
+    const auto it = std::find_if(entries.begin(), entries.end(), matches);
+    if (it == entries.end()) throw grader_error("the rubric lost its " + what + " while grading");
+    return *it;
+}
+
 }  // namespace
 
 graded_submission grade(const installation& in, const stage_info& stage, const fs::path& submission,
@@ -231,9 +240,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                                     "so it is worth no points";
                     i.seconds = o.seconds;
                 } else if (i.what == graded_item::kind::sweep) {
-                    const rubric_sweep& s = *std::find_if(r.sweeps.begin(), r.sweeps.end(), [&](const rubric_sweep& x) {
-                        return x.test == i.test.name;
-                    });
+                    const rubric_sweep& s = rubric_entry(
+                        r.sweeps, [&](const rubric_sweep& x) { return x.test == i.test.name; }, "sweep " + i.test.name);
                     run_limits limits = r.test_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
                     const test_outcome o = b.tests_program.empty()
@@ -251,9 +259,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                         i.message = v.message;
                     }
                 } else {
-                    const rubric_scene& s = *std::find_if(r.scenes.begin(), r.scenes.end(), [&](const rubric_scene& x) {
-                        return x.id == i.tags[1];
-                    });
+                    const rubric_scene& s = rubric_entry(
+                        r.scenes, [&](const rubric_scene& x) { return x.id == i.tags[1]; }, "scene " + i.tags[1]);
                     run_limits limits = r.render_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
                     const scene_outcome o = render_and_compare(b.render_program, s, i.reference_image, renders, limits, caps);
@@ -298,9 +305,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     const std::string whose = g.built ? "this submission" : "";
     for (graded_item& i : g.items) {
         if (i.what != graded_item::kind::sweep) continue;
-        const rubric_sweep& s = *std::find_if(r.sweeps.begin(), r.sweeps.end(), [&](const rubric_sweep& x) {
-            return x.test == i.test.name;
-        });
+        const rubric_sweep& s =
+            rubric_entry(r.sweeps, [&](const rubric_sweep& x) { return x.test == i.test.name; }, "sweep " + i.test.name);
         const vl::chart_files f = draw_chart(sweep_chart(s, i.sweep, i.reference_sweep, i.sweep.empty() ? "" : whose),
                                              charts / chart_stem(s.test));
         i.chart_svg = f.svg;
@@ -309,9 +315,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
     if (g.charts.empty())
         for (const rubric_chart& c : r.charts) g.charts.push_back({c.title, c.test, "", {}, reference[c.test].chart, {}, {}, {}});
     for (graded_chart& gc : g.charts) {
-        const rubric_chart& c = *std::find_if(r.charts.begin(), r.charts.end(), [&](const rubric_chart& x) {
-            return x.test == gc.test;
-        });
+        const rubric_chart& c =
+            rubric_entry(r.charts, [&](const rubric_chart& x) { return x.test == gc.test; }, "chart " + gc.test);
         const vl::chart_files f =
             draw_chart(measured_chart(c, gc.mine, gc.reference, gc.mine.empty() ? "" : whose), charts / chart_stem(c.test));
         gc.svg = f.svg;

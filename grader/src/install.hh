@@ -52,6 +52,10 @@ struct installation {
     std::filesystem::path contract_header(const stage_info& s) const {
         return assignment_dir(s) / ("stage_" + s.number + ".hh");
     }
+    /// assignments/NN-name/register.cc: the stage's scene-file names, complete in the stubs
+    /// and shared by the reference. Like the contract, the grader always compiles it as
+    /// handed out: a submission need not hold it, and its own copy is replaced.
+    std::filesystem::path registration(const stage_info& s) const { return assignment_dir(s) / "register.cc"; }
 
     /// The stage an instructor means by `what`: "02", "02-sphere" or "sphere".
     const stage_info& find_stage(const std::string& what) const;
