@@ -1,39 +1,34 @@
 // The convex planar polygon: see stage_02.hh for what each function must do, and
-// README.md for hints. read(), write() and the checks of the vertices are done
-// (vl/shape_params.hh, vl/convex_polygon.hh); the functions marked TODO are yours.
+// README.md for hints. Holding, reading and writing the vertices, their checks and
+// contains() are done (vl::shapes::polygon_base, vl/primitive_bases.hh); the functions
+// marked TODO are yours. vl/convex_polygon.hh has helpers for the geometry.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
-#include <optional>
-#include <ostream>
-#include <string>
 #include <utility>
 #include <vector>
 
 #include "stage_02.hh"
 #include "vl/convex_polygon.hh"
 #include "vl/not_implemented.hh"
-#include "vl/shape_params.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-/// \brief A convex planar polygon; its front is the side from which its vertices run
-/// counter-clockwise.
-class polygon final : public primitive {
+/// \brief A convex planar polygon with the vertices vertices_ (a member of the base); its
+/// front is the side from which its vertices run counter-clockwise.
+class polygon final : public shapes::polygon_base {
 public:
-    explicit polygon(std::vector<point> vertices) { set_geometry(std::move(vertices)); }
-
-    std::string type_name() const override { return "POLYGON"; }
+    explicit polygon(std::vector<point> vertices) : polygon_base(std::move(vertices)) { geometry_changed(); }
 
     vector normal([[maybe_unused]] const point& p) const override {
         // TODO: the unit normal on the side from which the vertices run counter-clockwise
         // (the same everywhere). vl::newell_normal() (vl/convex_polygon.hh) points that way.
         throw not_implemented_error();
     }
-    bool contains(const point&) const override { return false; }  // a flat object has no inside
+    // contains() is false: a flat object has no inside.
     point min_point() const override {
         // TODO: the lower-left-back corner of the smallest axis-aligned box around the vertices.
         throw not_implemented_error();
@@ -43,25 +38,13 @@ public:
         throw not_implemented_error();
     }
 
-    void read(scene_reader& in) override {
-        shapes::polygon_params p{vertices_};
-        read_with_surface(in, p.properties(in));
-        set_geometry(std::move(p.vertices));
-    }
-    void write(std::ostream& s) const override {
-        shapes::polygon_params{vertices_}.write(s);
-        write_surface(s);
-        s << " }";
-    }
-
 private:
-    /// Stores the geometry (vertices already checked by find_polygon_problem()); the constructor
-    /// calls it, and read() calls it again with what it read from the scene.
-    void set_geometry(std::vector<point> vertices) {
-        vertices_ = std::move(vertices);
-        for (point& p : vertices_) p = p.homogenized();
+    /// Called after every change of vertices_ (already checked by find_polygon_problem()):
+    /// by the constructor above, and by the base's read() with what it read from the scene.
+    void geometry_changed() override {
         // TODO (optional): anything find_intersection() should not recompute for every ray
-        // (the normal? the box?) belongs here, so that it is also right after read().
+        // (the normal? the box?) belongs here (in members you add), so that it is also
+        // right after read().
     }
 
     intersection find_intersection([[maybe_unused]] const ray& r) const override {
@@ -74,15 +57,12 @@ private:
         //   carry over: a convex polygon is "inside every edge".
         throw not_implemented_error();
     }
-
-    std::vector<point> vertices_;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_polygon(std::vector<point> vertices) {
-    for (point& p : vertices) p = p.homogenized();
-    if (const auto problem = find_polygon_problem(vertices)) throw usage_error("make_polygon: " + problem->message);
+    shapes::polygon_base::check(vertices);
     return std::make_unique<polygon>(std::move(vertices));
 }
 

@@ -1,22 +1,21 @@
 // The sphere: see stage_02.hh for what each function must do, and README.md for hints.
-// read() and write() are done (vl/shape_params.hh); the functions marked TODO are yours.
+// Holding, reading and writing the center and radius are done (vl::shapes::sphere_base,
+// vl/primitive_bases.hh); the functions marked TODO are yours.
 #include <cmath>
-#include <ostream>
 
 #include "stage_02.hh"
 #include "vl/not_implemented.hh"
-#include "vl/shape_params.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-/// \brief The thesis's sphere: every point at distance `radius` from `center`.
-class sphere final : public primitive {
+/// \brief The thesis's sphere: every point at distance `radius_` from `center_` (both
+/// members of the base).
+class sphere final : public shapes::sphere_base {
 public:
-    sphere(const point& center, double radius) { set_geometry(center, radius); }
-
-    std::string type_name() const override { return "SPHERE"; }
+    sphere(const point& center, double radius) : sphere_base(center, radius) { geometry_changed(); }
 
     vector normal([[maybe_unused]] const point& p) const override {
         // TODO: the outward unit normal at p, a point on the sphere.
@@ -35,25 +34,12 @@ public:
         throw not_implemented_error();
     }
 
-    void read(scene_reader& in) override {
-        shapes::sphere_params p{center_, radius_};
-        read_with_surface(in, p.properties(in));
-        set_geometry(p.center, p.radius);
-    }
-    void write(std::ostream& s) const override {
-        shapes::sphere_params{center_, radius_}.write(s);
-        write_surface(s);
-        s << " }";
-    }
-
 private:
-    /// Stores the geometry; the constructor calls it, and read() calls it again with what
-    /// it read from the scene.
-    void set_geometry(const point& center, double radius) {
-        center_ = center.homogenized();
-        radius_ = radius;
+    /// Called after every change of center_ and radius_: by the constructor above, and
+    /// by the base's read() with what it read from the scene.
+    void geometry_changed() override {
         // TODO (optional): anything find_intersection() should not recompute for every ray
-        // belongs here, so that it is also right after read().
+        // belongs here (in members you add), so that it is also right after read().
     }
 
     intersection find_intersection([[maybe_unused]] const ray& r) const override {
@@ -67,16 +53,12 @@ private:
         //   shows how to avoid both.
         throw not_implemented_error();
     }
-
-    point center_;
-    double radius_ = 1;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    if (!checks::finite(center.homogenized()) || !std::isfinite(radius) || !(radius > 0))
-        throw usage_error("make_sphere: the center must be finite and the radius a finite number > 0");
+    shapes::sphere_base::check(center, radius);
     return std::make_unique<sphere>(center, radius);
 }
 

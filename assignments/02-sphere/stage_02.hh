@@ -7,7 +7,15 @@
 /// done); add any helpers, members and files you like there.
 ///
 /// Every object is a vl::primitive (framework/include/vl/primitive.hh), used only through
-/// the vl::rtab_component interface. For each one you write:
+/// the vl::rtab_component interface. Each derives from its base in
+/// framework/include/vl/primitive_bases.hh (vl::shapes::sphere_base, plane_base,
+/// triangle_base, polygon_base), which holds the geometry in protected members (`center_`
+/// and `radius_`; `point_` and `normal_`; `a_`, `b_` and `c_`; `vertices_`), names the
+/// object, reads and writes it, and checks a factory's arguments (`check()`); the flat
+/// objects' bases also answer contains(). What the geometry needs beyond that (a unit
+/// normal, a box) a class computes in its override of the base's `geometry_changed()`,
+/// which runs after every change of the geometry: at the end of the class's constructor,
+/// and after read(). For each object you write:
 ///
 /// - **find_intersection(r)**, which the framework calls through the counted
 ///   `intersect(r)`. It returns `intersection::at(t, this)` for the *nearest* hit with
@@ -22,7 +30,7 @@
 ///   (away from the inside of a sphere; for the flat objects, to the side given below).
 ///   A tracer negates it when it is on the other side; normal() never looks at a ray.
 /// - **contains(p)**: true when `p` is strictly inside. Flat objects have no inside:
-///   always false.
+///   always false (their bases say so already).
 /// - **min_point() / max_point()**: the corners of the smallest axis-aligned box around
 ///   the object. A plane is unbounded: both are `NaN_point`, the thesis's "no box", which
 ///   tells a bounding volume (stage 03) that it cannot hold the object.

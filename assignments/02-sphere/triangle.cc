@@ -1,30 +1,27 @@
 // The triangle: see stage_02.hh for what each function must do, and README.md for hints.
-// read(), write() and the check of the vertices are done (vl/shape_params.hh); the
-// functions marked TODO are yours.
+// Holding, reading and writing the vertices, their check and contains() are done
+// (vl::shapes::triangle_base, vl/primitive_bases.hh); the functions marked TODO are yours.
 #include <cmath>
-#include <ostream>
-#include <string>
 
 #include "stage_02.hh"
 #include "vl/not_implemented.hh"
-#include "vl/shape_params.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-/// \brief The triangle a b c; its front is the side from which a, b, c run counter-clockwise.
-class triangle final : public primitive {
+/// \brief The triangle a_ b_ c_ (members of the base); its front is the side from which
+/// a, b, c run counter-clockwise.
+class triangle final : public shapes::triangle_base {
 public:
-    triangle(const point& a, const point& b, const point& c) { set_geometry(a, b, c); }
-
-    std::string type_name() const override { return "TRIANGLE"; }
+    triangle(const point& a, const point& b, const point& c) : triangle_base(a, b, c) { geometry_changed(); }
 
     vector normal([[maybe_unused]] const point& p) const override {
         // TODO: the unit normal on the side from which a, b, c run counter-clockwise.
         throw not_implemented_error();
     }
-    bool contains(const point&) const override { return false; }  // a flat object has no inside
+    // contains() is false: a flat object has no inside.
     point min_point() const override {
         // TODO: the lower-left-back corner of the smallest axis-aligned box around the vertices.
         throw not_implemented_error();
@@ -34,28 +31,12 @@ public:
         throw not_implemented_error();
     }
 
-    void read(scene_reader& in) override {
-        const source_location where = in.peek().where;
-        shapes::triangle_params p{a_, b_, c_};
-        read_with_surface(in, p.properties(in));
-        p.check(in, where);
-        set_geometry(p.a, p.b, p.c);
-    }
-    void write(std::ostream& s) const override {
-        shapes::triangle_params{a_, b_, c_}.write(s);
-        write_surface(s);
-        s << " }";
-    }
-
 private:
-    /// Stores the geometry; the constructor calls it, and read() calls it again with what
-    /// it read from the scene.
-    void set_geometry(const point& a, const point& b, const point& c) {
-        a_ = a.homogenized();
-        b_ = b.homogenized();
-        c_ = c.homogenized();
+    /// Called after every change of a_, b_ and c_: by the constructor above, and by the
+    /// base's read() with what it read from the scene.
+    void geometry_changed() override {
         // TODO (optional): anything find_intersection() should not recompute for every ray
-        // belongs here, so that it is also right after read().
+        // belongs here (in members you add), so that it is also right after read().
     }
 
     intersection find_intersection([[maybe_unused]] const ray& r) const override {
@@ -71,15 +52,12 @@ private:
         //   you do when one is exactly 0?
         throw not_implemented_error();
     }
-
-    point a_, b_, c_;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_triangle(const point& a, const point& b, const point& c) {
-    if (const std::string problem = checks::triangle_problem(a.homogenized(), b.homogenized(), c.homogenized()); !problem.empty())
-        throw usage_error("make_triangle: " + problem);
+    shapes::triangle_base::check(a, b, c);
     return std::make_unique<triangle>(a, b, c);
 }
 

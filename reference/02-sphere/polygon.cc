@@ -1,18 +1,13 @@
 // Reference: the convex planar polygon (see assignments/02-sphere/stage_02.hh).
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
-#include <limits>
-#include <optional>
-#include <ostream>
-#include <string>
 #include <utility>
 #include <vector>
 
 #include "ray_space.hh"
 #include "stage_02.hh"
 #include "vl/convex_polygon.hh"
-#include "vl/shape_params.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
@@ -20,31 +15,16 @@ namespace {
 
 /// \brief A convex planar polygon; its front is the side from which its vertices run
 /// counter-clockwise.
-class polygon final : public primitive {
+class polygon final : public shapes::polygon_base {
 public:
-    explicit polygon(std::vector<point> vertices) { set_geometry(std::move(vertices)); }
+    explicit polygon(std::vector<point> vertices) : polygon_base(std::move(vertices)) { geometry_changed(); }
 
-    std::string type_name() const override { return "POLYGON"; }
     vector normal(const point&) const override { return normal_; }
-    bool contains(const point&) const override { return false; }  // a flat object has no inside
     point min_point() const override { return min_; }
     point max_point() const override { return max_; }
 
-    void read(scene_reader& in) override {
-        shapes::polygon_params p{vertices_};
-        read_with_surface(in, p.properties(in));
-        set_geometry(std::move(p.vertices));
-    }
-    void write(std::ostream& s) const override {
-        shapes::polygon_params{vertices_}.write(s);
-        write_surface(s);
-        s << " }";
-    }
-
 private:
-    void set_geometry(std::vector<point> vertices) {
-        vertices_ = std::move(vertices);
-        for (point& p : vertices_) p = p.homogenized();
+    void geometry_changed() override {
         normal_ = newell_normal(vertices_, centroid_of(vertices_)).unit();
         min_ = max_ = vertices_.front();
         for (const point& p : vertices_) {
@@ -80,7 +60,6 @@ private:
         return intersection::none();
     }
 
-    std::vector<point> vertices_;
     vector normal_;  ///< unit, by Newell's method: the counter-clockwise side
     point min_, max_;
 };
@@ -88,8 +67,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_polygon(std::vector<point> vertices) {
-    for (point& p : vertices) p = p.homogenized();
-    if (const auto problem = find_polygon_problem(vertices)) throw usage_error("make_polygon: " + problem->message);
+    shapes::polygon_base::check(vertices);
     return std::make_unique<polygon>(std::move(vertices));
 }
 

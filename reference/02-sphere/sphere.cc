@@ -1,43 +1,25 @@
 // Reference: the sphere (see assignments/02-sphere/stage_02.hh).
 #include <cmath>
-#include <ostream>
 #include <utility>
 
 #include "stage_02.hh"
-#include "vl/shape_params.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-/// \brief The thesis's sphere: every point at distance `radius` from `center`.
-class sphere final : public primitive {
+/// \brief The thesis's sphere: every point at distance `radius_` from `center_`.
+class sphere final : public shapes::sphere_base {
 public:
-    sphere(const point& center, double radius) { set_geometry(center, radius); }
+    sphere(const point& center, double radius) : sphere_base(center, radius) {}
 
-    std::string type_name() const override { return "SPHERE"; }
     vector normal(const point& p) const override { return (p - center_).unit(); }
     bool contains(const point& p) const override { return (p - center_).length() < radius_; }
     point min_point() const override { return center_ - vector(radius_, radius_, radius_); }
     point max_point() const override { return center_ + vector(radius_, radius_, radius_); }
 
-    void read(scene_reader& in) override {
-        shapes::sphere_params p{center_, radius_};
-        read_with_surface(in, p.properties(in));
-        set_geometry(p.center, p.radius);
-    }
-    void write(std::ostream& s) const override {
-        shapes::sphere_params{center_, radius_}.write(s);
-        write_surface(s);
-        s << " }";
-    }
-
 private:
-    void set_geometry(const point& center, double radius) {
-        center_ = center.homogenized();
-        radius_ = radius;
-    }
-
     // Robust ray-sphere intersection (Haines, Guenther and Akenine-Moeller, "Precision
     // Improvements for Ray/Sphere Intersection", Ray Tracing Gems ch. 7). With the unit
     // direction d and f = origin - center, t solves t^2 + 2 b t + c = 0 with b = f.d and
@@ -66,16 +48,12 @@ private:
         if (t1 > eps) return intersection::at(t1, this);  // the origin is inside (or on) the sphere
         return intersection::none();
     }
-
-    point center_;
-    double radius_ = 1;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    if (!checks::finite(center.homogenized()) || !std::isfinite(radius) || !(radius > 0))
-        throw usage_error("make_sphere: the center must be finite and the radius a finite number > 0");
+    shapes::sphere_base::check(center, radius);
     return std::make_unique<sphere>(center, radius);
 }
 

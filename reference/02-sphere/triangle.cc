@@ -1,25 +1,21 @@
 // Reference: the watertight triangle (see assignments/02-sphere/stage_02.hh).
 #include <algorithm>
 #include <cmath>
-#include <ostream>
-#include <string>
 
 #include "ray_space.hh"
 #include "stage_02.hh"
-#include "vl/shape_params.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
 /// \brief The triangle a b c; its front is the side from which a, b, c run counter-clockwise.
-class triangle final : public primitive {
+class triangle final : public shapes::triangle_base {
 public:
-    triangle(const point& a, const point& b, const point& c) { set_geometry(a, b, c); }
+    triangle(const point& a, const point& b, const point& c) : triangle_base(a, b, c) { geometry_changed(); }
 
-    std::string type_name() const override { return "TRIANGLE"; }
     vector normal(const point&) const override { return normal_; }
-    bool contains(const point&) const override { return false; }  // a flat object has no inside
     point min_point() const override {
         return {std::min({a_.x, b_.x, c_.x}), std::min({a_.y, b_.y, c_.y}), std::min({a_.z, b_.z, c_.z})};
     }
@@ -27,26 +23,8 @@ public:
         return {std::max({a_.x, b_.x, c_.x}), std::max({a_.y, b_.y, c_.y}), std::max({a_.z, b_.z, c_.z})};
     }
 
-    void read(scene_reader& in) override {
-        const source_location where = in.peek().where;
-        shapes::triangle_params p{a_, b_, c_};
-        read_with_surface(in, p.properties(in));
-        p.check(in, where);
-        set_geometry(p.a, p.b, p.c);
-    }
-    void write(std::ostream& s) const override {
-        shapes::triangle_params{a_, b_, c_}.write(s);
-        write_surface(s);
-        s << " }";
-    }
-
 private:
-    void set_geometry(const point& a, const point& b, const point& c) {
-        a_ = a.homogenized();
-        b_ = b.homogenized();
-        c_ = c.homogenized();
-        normal_ = ((b_ - a_) % (c_ - a_)).unit();
-    }
+    void geometry_changed() override { normal_ = ((b_ - a_) % (c_ - a_)).unit(); }
 
     // Watertight ray/triangle intersection (Woop, Benthin and Wald, JCGT 2(1), 2013).
     // The vertices go to ray space (ray_space.hh), where the ray is the +z axis; the ray
@@ -68,15 +46,13 @@ private:
         return intersection::none();
     }
 
-    point a_, b_, c_;
     vector normal_;  ///< ((b - a) % (c - a)).unit()
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_triangle(const point& a, const point& b, const point& c) {
-    if (const std::string problem = checks::triangle_problem(a.homogenized(), b.homogenized(), c.homogenized()); !problem.empty())
-        throw usage_error("make_triangle: " + problem);
+    shapes::triangle_base::check(a, b, c);
     return std::make_unique<triangle>(a, b, c);
 }
 

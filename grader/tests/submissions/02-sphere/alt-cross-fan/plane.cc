@@ -4,70 +4,45 @@
 
 #include "stage_02.hh"
 #include "text.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-bool finite(double x, double y, double z) { return std::isfinite(x) && std::isfinite(y) && std::isfinite(z); }
-bool good_normal(const vector& n) {
-    if (!finite(n.x, n.y, n.z)) return false;
-    const vector u = vector(n.x, n.y, n.z).unit();
-    return finite(u.x, u.y, u.z) && std::fabs(u.length() - 1) < 1e-9;
-}
-
-class plane final : public primitive {
+class plane final : public shapes::plane_base {
 public:
-    plane(const point& on, const vector& n) : on_(on), given_(n.x, n.y, n.z), unit_(given_.unit()) {}
-
-    std::string type_name() const override { return "PLANE"; }
+    plane(const point& point_on_plane, const vector& normal) : plane_base(point_on_plane, normal) {
+        geometry_changed();
+    }
 
     vector normal(const point&) const override { return unit_; }
-    bool contains(const point&) const override { return false; }
 
-    void read(scene_reader& in) override {
-        point on = on_;
-        vector n = given_;
-        read_with_surface(in, {{"point", [&] {
-                                    const source_location where = in.peek().where;
-                                    on = in.read_point("point of PLANE").homogenized();
-                                    if (!finite(on.x, on.y, on.z)) in.fail(where, "point of PLANE must be a finite point");
-                                }},
-                               {"normal", [&] {
-                                    const source_location where = in.peek().where;
-                                    n = in.read_vector("normal of PLANE");
-                                    if (!good_normal(n)) in.fail(where, "normal of PLANE must be a finite, non-zero vector");
-                                }}});
-        on_ = on;
-        given_ = vector(n.x, n.y, n.z);
-        unit_ = given_.unit();
-    }
     void write(std::ostream& s) const override {
-        s << "PLANE { point " << number{on_.x} << ' ' << number{on_.y} << ' ' << number{on_.z} << " normal "
-          << number{given_.x} << ' ' << number{given_.y} << ' ' << number{given_.z};
+        s << "PLANE { point " << number{point_.x} << ' ' << number{point_.y} << ' ' << number{point_.z} << " normal "
+          << number{normal_.x} << ' ' << number{normal_.y} << ' ' << number{normal_.z};
         write_surface(s);
         s << " }";
     }
 
 private:
+    void geometry_changed() override { unit_ = normal_.unit(); }
+
     intersection find_intersection(const ray& r) const override {
         const double den = r.direction() * unit_;
         if (!(std::fabs(den) > 0)) return intersection::none();
-        const double t = ((on_ - r.origin()) * unit_) / den;
+        const double t = ((point_ - r.origin()) * unit_) / den;
         return std::isfinite(t) && t > std::fabs(zero_t()) ? intersection::at(t, this) : intersection::none();
     }
 
-    point on_;
-    vector given_, unit_;
+    vector unit_;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {
-    const point p = point_on_plane.homogenized();
-    if (!finite(p.x, p.y, p.z) || !good_normal(normal))
-        throw usage_error("make_plane: the point must be finite and the normal a finite, non-zero vector");
-    return std::make_unique<plane>(p, normal);
+    shapes::plane_base::check(point_on_plane, normal);
+    return std::make_unique<plane>(point_on_plane, normal);
 }
 
 }  // namespace vl::stage02

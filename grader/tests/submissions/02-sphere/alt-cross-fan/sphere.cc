@@ -6,36 +6,21 @@
 
 #include "stage_02.hh"
 #include "text.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-class sphere final : public primitive {
+class sphere final : public shapes::sphere_base {
 public:
-    sphere(const point& center, double radius) : center_(center), radius_(radius) {}
-
-    std::string type_name() const override { return "SPHERE"; }
+    sphere(const point& center, double radius) : sphere_base(center, radius) {}
 
     vector normal(const point& p) const override { return (p - center_).unit(); }
     bool contains(const point& p) const override { return (p - center_).length() < radius_; }
     point min_point() const override { return {center_.x - radius_, center_.y - radius_, center_.z - radius_}; }
     point max_point() const override { return {center_.x + radius_, center_.y + radius_, center_.z + radius_}; }
 
-    void read(scene_reader& in) override {
-        point center = center_;
-        double radius = radius_;
-        read_with_surface(in, {{"center", [&] {
-                                    const source_location where = in.peek().where;
-                                    center = in.read_point("center of SPHERE").homogenized();
-                                    if (!finite(center)) in.fail(where, "center of SPHERE must be a finite point (w not 0)");
-                                }},
-                               {"radius", [&] { radius = in.read_positive("radius of SPHERE"); }}});
-        center_ = center;
-        radius_ = radius;
-    }
     void write(std::ostream& s) const override {
         s << "SPHERE { center " << number{center_.x} << ' ' << number{center_.y} << ' ' << number{center_.z}
           << " radius " << number{radius_};
@@ -62,18 +47,13 @@ private:
         if (second > eps) return intersection::at(second, this);
         return intersection::none();
     }
-
-    point center_;
-    double radius_;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    const point c = center.homogenized();
-    if (!finite(c) || !std::isfinite(radius) || !(radius > 0))
-        throw usage_error("make_sphere: the center must be finite and the radius a finite number > 0");
-    return std::make_unique<sphere>(c, radius);
+    shapes::sphere_base::check(center, radius);
+    return std::make_unique<sphere>(center, radius);
 }
 
 }  // namespace vl::stage02

@@ -6,18 +6,15 @@
 #include <utility>
 
 #include "stage_02.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-class sphere final : public primitive {
+class sphere final : public shapes::sphere_base {
 public:
-    sphere(const point& center, double radius) { set_geometry(center, radius); }
-
-    std::string type_name() const override { return "SPHERE"; }
+    sphere(const point& center, double radius) : sphere_base(center, radius) {}
 
     vector normal(const point& p) const override { return (p - center_).unit(); }
     bool contains(const point& p) const override {
@@ -27,17 +24,6 @@ public:
     point min_point() const override { return {center_.x - radius_, center_.y - radius_, center_.z - radius_}; }
     point max_point() const override { return {center_.x + radius_, center_.y + radius_, center_.z + radius_}; }
 
-    void read(scene_reader& in) override {
-        point center = center_;
-        double radius = radius_;
-        read_with_surface(in, {{"center", [&] {
-                                    const source_location where = in.peek().where;
-                                    center = in.read_point("center of SPHERE").homogenized();
-                                    if (!finite(center)) in.fail(where, "center of SPHERE must be a finite point (w not 0)");
-                                }},
-                               {"radius", [&] { radius = in.read_positive("radius of SPHERE"); }}});
-        set_geometry(center, radius);
-    }
     void write(std::ostream& s) const override {
         const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
         s << "SPHERE { center " << center_.x << ' ' << center_.y << ' ' << center_.z << " radius " << radius_;
@@ -47,11 +33,6 @@ public:
     }
 
 private:
-    void set_geometry(const point& center, double radius) {
-        center_ = center.homogenized();
-        radius_ = radius;
-    }
-
     intersection find_intersection(const ray& r) const override {
         const vector d = r.direction();
         const vector to_center = center_ - r.origin();
@@ -79,16 +60,12 @@ private:
         if (t_far > eps && std::isfinite(t_far)) return intersection::at(t_far, this);
         return intersection::none();
     }
-
-    point center_;
-    double radius_ = 1;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    if (!finite(center.homogenized()) || !std::isfinite(radius) || !(radius > 0))
-        throw usage_error("make_sphere: the center must be finite and the radius a finite number > 0");
+    shapes::sphere_base::check(center, radius);
     return std::make_unique<sphere>(center, radius);
 }
 

@@ -4,42 +4,18 @@
 
 #include "numbers.hh"
 #include "stage_02.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-bool finite(double x, double y, double z) { return std::isfinite(x) && std::isfinite(y) && std::isfinite(z); }
-bool good_normal(const vector& n) {
-    if (!finite(n.x, n.y, n.z)) return false;
-    const vector u = vector(n.x, n.y, n.z).unit();
-    return finite(u.x, u.y, u.z) && std::fabs(u.length() - 1) < 1e-9;
-}
-
-class plane final : public primitive {
+class plane final : public shapes::plane_base {
 public:
-    plane(const point& on, const vector& normal) { set_geometry(on, normal); }
-
-    std::string type_name() const override { return "PLANE"; }
+    plane(const point& point_on_plane, const vector& normal) : plane_base(point_on_plane, normal) { geometry_changed(); }
 
     vector normal(const point&) const override { return unit_; }
-    bool contains(const point&) const override { return false; }
 
-    void read(scene_reader& in) override {
-        point on = point_;
-        vector n = normal_;
-        read_with_surface(in, {{"point", [&] {
-                                    const source_location where = in.peek().where;
-                                    on = in.read_point("point of PLANE").homogenized();
-                                    if (!finite(on.x, on.y, on.z)) in.fail(where, "point of PLANE must be a finite point");
-                                }},
-                               {"normal", [&] {
-                                    const source_location where = in.peek().where;
-                                    n = in.read_vector("normal of PLANE");
-                                    if (!good_normal(n)) in.fail(where, "normal of PLANE must be a finite, non-zero vector");
-                                }}});
-        set_geometry(on, n);
-    }
     void write(std::ostream& s) const override {
         s << "PLANE { point";
         for (const double x : {point_.x, point_.y, point_.z}) {
@@ -56,9 +32,7 @@ public:
     }
 
 private:
-    void set_geometry(const point& on, const vector& normal) {
-        point_ = on.homogenized();
-        normal_ = vector(normal.x, normal.y, normal.z);
+    void geometry_changed() override {
         unit_ = normal_.unit();
         offset_ = unit_.x * point_.x + unit_.y * point_.y + unit_.z * point_.z;
     }
@@ -72,18 +46,15 @@ private:
         return intersection::at(t, this);
     }
 
-    point point_;
-    vector normal_, unit_;
+    vector unit_;
     double offset_ = 0;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {
-    const point p = point_on_plane.homogenized();
-    if (!finite(p.x, p.y, p.z) || !good_normal(normal))
-        throw usage_error("make_plane: the point must be finite and the normal a finite, non-zero vector");
-    return std::make_unique<plane>(p, normal);
+    shapes::plane_base::check(point_on_plane, normal);
+    return std::make_unique<plane>(point_on_plane, normal);
 }
 
 }  // namespace vl::stage02

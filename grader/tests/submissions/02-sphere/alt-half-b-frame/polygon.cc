@@ -13,40 +13,20 @@
 #include "ray_frame.hh"
 #include "stage_02.hh"
 #include "vl/convex_polygon.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-class polygon final : public primitive {
+class polygon final : public shapes::polygon_base {
 public:
-    explicit polygon(std::vector<point> vertices) { set_geometry(std::move(vertices)); }
-
-    std::string type_name() const override { return "POLYGON"; }
+    explicit polygon(std::vector<point> vertices) : polygon_base(std::move(vertices)) { geometry_changed(); }
 
     vector normal(const point&) const override { return normal_; }
-    bool contains(const point&) const override { return false; }
     point min_point() const override { return low_; }
     point max_point() const override { return high_; }
 
-    void read(scene_reader& in) override {
-        std::vector<point> vertices = vertices_;
-        read_with_surface(in, {{"vertices", [&] {
-                                    if (in.peek().text != "(")
-                                        in.fail_expected("'(' to start a vertex of POLYGON (each vertex is written (x, y, z))");
-                                    std::vector<source_location> where;
-                                    vertices.clear();
-                                    while (in.peek().type == token::kind::punct && in.peek().text == "(") {
-                                        where.push_back(in.peek().where);
-                                        vertices.push_back(in.read_point("vertex of POLYGON").homogenized());
-                                    }
-                                    if (const auto problem = find_polygon_problem(vertices)) {
-                                        const std::size_t at = std::min(problem->vertex, where.size() - 1);
-                                        in.fail(where[at], "this POLYGON is not convex and planar: " + problem->message);
-                                    }
-                                }}});
-        set_geometry(std::move(vertices));
-    }
     void write(std::ostream& s) const override {
         s << "POLYGON { vertices";
         for (const point& p : vertices_) {
@@ -63,9 +43,7 @@ public:
     }
 
 private:
-    void set_geometry(std::vector<point> vertices) {
-        vertices_ = std::move(vertices);
-        for (point& p : vertices_) p = p.homogenized();
+    void geometry_changed() override {
         normal_ = newell_normal(vertices_, centroid_of(vertices_)).unit();
         low_ = high_ = vertices_.front();
         for (const point& p : vertices_) {
@@ -94,7 +72,6 @@ private:
         return intersection::none();
     }
 
-    std::vector<point> vertices_;
     vector normal_;
     point low_, high_;
 };
@@ -102,8 +79,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_polygon(std::vector<point> vertices) {
-    for (point& p : vertices) p = p.homogenized();
-    if (const auto problem = find_polygon_problem(vertices)) throw usage_error("make_polygon: " + problem->message);
+    shapes::polygon_base::check(vertices);
     return std::make_unique<polygon>(std::move(vertices));
 }
 

@@ -4,43 +4,18 @@
 #include <ostream>
 
 #include "stage_02.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-bool finite(const vector& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-bool usable_normal(const vector& n) {
-    const vector u = vector(n.x, n.y, n.z).unit();
-    return finite(n) && finite(u) && std::fabs(u.length() - 1) < 1e-9;
-}
-
-class plane final : public primitive {
+class plane final : public shapes::plane_base {
 public:
-    plane(const point& point_on_plane, const vector& normal) { set_geometry(point_on_plane, normal); }
-
-    std::string type_name() const override { return "PLANE"; }
+    plane(const point& point_on_plane, const vector& normal) : plane_base(point_on_plane, normal) { geometry_changed(); }
 
     vector normal(const point&) const override { return unit_normal_; }
-    bool contains(const point&) const override { return false; }
 
-    void read(scene_reader& in) override {
-        point p = point_;
-        vector n = normal_;
-        read_with_surface(in, {{"point", [&] {
-                                    const source_location where = in.peek().where;
-                                    p = in.read_point("point of PLANE").homogenized();
-                                    if (!finite(p)) in.fail(where, "point of PLANE must be a finite point (w not 0)");
-                                }},
-                               {"normal", [&] {
-                                    const source_location where = in.peek().where;
-                                    n = in.read_vector("normal of PLANE");
-                                    n.w = 0;
-                                    if (!usable_normal(n)) in.fail(where, "normal of PLANE must not be the zero vector");
-                                }}});
-        set_geometry(p, n);
-    }
     void write(std::ostream& s) const override {
         const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
         s << "PLANE { point " << point_.x << ' ' << point_.y << ' ' << point_.z << " normal " << normal_.x << ' '
@@ -51,9 +26,7 @@ public:
     }
 
 private:
-    void set_geometry(const point& point_on_plane, const vector& normal) {
-        point_ = point_on_plane.homogenized();
-        normal_ = vector(normal.x, normal.y, normal.z);
+    void geometry_changed() override {
         unit_normal_ = normal_.unit();
     }
 
@@ -65,16 +38,13 @@ private:
         return intersection::none();
     }
 
-    point point_;
-    vector normal_;
     vector unit_normal_;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {
-    if (!finite(point_on_plane.homogenized()) || !usable_normal(normal))
-        throw usage_error("make_plane: the point must be finite and the normal a finite, non-zero vector");
+    shapes::plane_base::check(point_on_plane, normal);
     return std::make_unique<plane>(point_on_plane, normal);
 }
 

@@ -11,44 +11,24 @@
 #include <utility>
 #include <vector>
 
+#include "shear.hh"
 #include "stage_02.hh"
 #include "vl/convex_polygon.hh"
-#include "shear.hh"
+#include "vl/primitive_bases.hh"
 #include "wide.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-class polygon final : public primitive {
+class polygon final : public shapes::polygon_base {
 public:
-    explicit polygon(std::vector<point> vertices) { set_geometry(std::move(vertices)); }
-
-    std::string type_name() const override { return "POLYGON"; }
+    explicit polygon(std::vector<point> vertices) : polygon_base(std::move(vertices)) { geometry_changed(); }
 
     vector normal(const point&) const override { return normal_; }
-    bool contains(const point&) const override { return false; }
     point min_point() const override { return min_; }
     point max_point() const override { return max_; }
 
-    void read(scene_reader& in) override {
-        std::vector<point> vertices = vertices_;
-        read_with_surface(in, {{"vertices", [&] {
-                                    if (in.peek().text != "(")
-                                        in.fail_expected("'(' to start a vertex of POLYGON (each vertex is written (x, y, z))");
-                                    std::vector<source_location> where;
-                                    vertices.clear();
-                                    while (in.peek().type == token::kind::punct && in.peek().text == "(") {
-                                        where.push_back(in.peek().where);
-                                        vertices.push_back(in.read_point("vertex of POLYGON").homogenized());
-                                    }
-                                    if (const auto problem = find_polygon_problem(vertices)) {
-                                        const std::size_t at = std::min(problem->vertex, where.size() - 1);
-                                        in.fail(where[at], "this POLYGON is not convex and planar: " + problem->message);
-                                    }
-                                }}});
-        set_geometry(std::move(vertices));
-    }
     void write(std::ostream& s) const override {
         const auto old_precision = s.precision(std::numeric_limits<double>::max_digits10);
         s << "POLYGON { vertices";
@@ -59,9 +39,7 @@ public:
     }
 
 private:
-    void set_geometry(std::vector<point> vertices) {
-        vertices_ = std::move(vertices);
-        for (point& p : vertices_) p = p.homogenized();
+    void geometry_changed() override {
         normal_ = newell_normal(vertices_, centroid_of(vertices_)).unit();
         min_ = max_ = vertices_.front();
         for (const point& p : vertices_) {
@@ -90,7 +68,6 @@ private:
         return intersection::none();
     }
 
-    std::vector<point> vertices_;
     vector normal_;
     point min_, max_;
 };
@@ -98,8 +75,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_polygon(std::vector<point> vertices) {
-    for (point& p : vertices) p = p.homogenized();
-    if (const auto problem = find_polygon_problem(vertices)) throw usage_error("make_polygon: " + problem->message);
+    shapes::polygon_base::check(vertices);
     return std::make_unique<polygon>(std::move(vertices));
 }
 

@@ -6,19 +6,16 @@
 #include <utility>
 
 #include "stage_02.hh"
+#include "vl/primitive_bases.hh"
 #include "wide.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-class sphere final : public primitive {
+class sphere final : public shapes::sphere_base {
 public:
-    sphere(const point& center, double radius) { set_geometry(center, radius); }
-
-    std::string type_name() const override { return "SPHERE"; }
+    sphere(const point& center, double radius) : sphere_base(center, radius) {}
 
     vector normal(const point& p) const override { return (p - center_).unit(); }
     bool contains(const point& p) const override {
@@ -28,17 +25,6 @@ public:
     point min_point() const override { return center_ - vector(radius_, radius_, radius_); }
     point max_point() const override { return center_ + vector(radius_, radius_, radius_); }
 
-    void read(scene_reader& in) override {
-        point center = center_;
-        double radius = radius_;
-        read_with_surface(in, {{"center", [&] {
-                                    const source_location where = in.peek().where;
-                                    center = in.read_point("center of SPHERE").homogenized();
-                                    if (!finite(center)) in.fail(where, "center of SPHERE must be a finite point (w not 0)");
-                                }},
-                               {"radius", [&] { radius = in.read_positive("radius of SPHERE"); }}});
-        set_geometry(center, radius);
-    }
     void write(std::ostream& s) const override {
         const auto old_flags = s.flags();
         const auto old_precision = s.precision(16);
@@ -51,11 +37,6 @@ public:
     }
 
 private:
-    void set_geometry(const point& center, double radius) {
-        center_ = center.homogenized();
-        radius_ = radius;
-    }
-
     intersection find_intersection(const ray& r) const override {
         using wide::dot;
         const wide::vec f = wide::from(r.origin()) - wide::from(center_), d = wide::from(r.direction());
@@ -74,16 +55,12 @@ private:
         if (t1 > eps) return intersection::at(t1, this);
         return intersection::none();
     }
-
-    point center_;
-    double radius_ = 1;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    if (!finite(center.homogenized()) || !std::isfinite(radius) || !(radius > 0))
-        throw usage_error("make_sphere: the center must be finite and the radius a finite number > 0");
+    shapes::sphere_base::check(center, radius);
     return std::make_unique<sphere>(center, radius);
 }
 

@@ -6,18 +6,15 @@
 #include "numbers.hh"
 #include "ray_frame.hh"
 #include "stage_02.hh"
+#include "vl/primitive_bases.hh"
 
 namespace vl::stage02 {
 
 namespace {
 
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-class sphere final : public primitive {
+class sphere final : public shapes::sphere_base {
 public:
-    sphere(const point& center, double radius) { set_geometry(center, radius); }
-
-    std::string type_name() const override { return "SPHERE"; }
+    sphere(const point& center, double radius) : sphere_base(center, radius) {}
 
     vector normal(const point& p) const override {
         const vector out = p - center_;
@@ -27,17 +24,6 @@ public:
     point min_point() const override { return center_ - vector(radius_, radius_, radius_); }
     point max_point() const override { return center_ + vector(radius_, radius_, radius_); }
 
-    void read(scene_reader& in) override {
-        point center = center_;
-        double radius = radius_;
-        read_with_surface(in, {{"center", [&] {
-                                    const source_location where = in.peek().where;
-                                    center = in.read_point("center of SPHERE").homogenized();
-                                    if (!finite(center)) in.fail(where, "center of SPHERE must be a finite point (w not 0)");
-                                }},
-                               {"radius", [&] { radius = in.read_positive("radius of SPHERE"); }}});
-        set_geometry(center, radius);
-    }
     void write(std::ostream& s) const override {
         s << "SPHERE { center ";
         write_number(s, center_.x);
@@ -52,11 +38,6 @@ public:
     }
 
 private:
-    void set_geometry(const point& center, double radius) {
-        center_ = center.homogenized();
-        radius_ = radius;
-    }
-
     // In the ray's frame (ray_frame.hh) the ray is the +z axis from (0, 0, 0); the centre
     // is at (x, y, z). The ray meets the sphere at z -+ h with h^2 = r^2 - (x^2 + y^2); the
     // root that is a sum of like signs is computed directly, the other from their product
@@ -77,16 +58,12 @@ private:
         if (t1 > eps) return intersection::at(t1, this);
         return intersection::none();
     }
-
-    point center_;
-    double radius_ = 1;
 };
 
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    if (!finite(center.homogenized()) || !std::isfinite(radius) || !(radius > 0))
-        throw usage_error("make_sphere: the center must be finite and the radius a finite number > 0");
+    shapes::sphere_base::check(center, radius);
     return std::make_unique<sphere>(center, radius);
 }
 
