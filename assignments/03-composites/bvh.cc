@@ -1,19 +1,17 @@
 // The bounding volume hierarchy: see stage_03.hh for what each function must do, and
-// README.md for hints. Adding children, reading, writing and building the tree once at
-// the first ray (safely, from several threads) are done; build(), find_intersection()
-// and the box are yours. The node layout below is a suggestion: change it as you like.
-#include <atomic>
+// README.md for hints. build(), find_intersection() and the box are yours. The rest is
+// done in the base class, vl::shapes::bvh_base (framework/include/vl/composite_bases.hh):
+// leaf_size_, insert() and its refusals, delete_all_children(), reading and writing BVH,
+// the checks of make_bvh(), and ensure_built(), which calls your build() once at the
+// first ray after a change, safely when several threads arrive at once. The node layout
+// below is a suggestion: change it as you like.
 #include <cstdint>
-#include <mutex>
-#include <ostream>
 #include <vector>
 
-#include "bounding_sphere.hh"
 #include "stage_03.hh"
 #include "vl/bounds.hh"
+#include "vl/composite_bases.hh"
 #include "vl/not_implemented.hh"
-#include "vl/scene_reader.hh"
-#include "vl/shape_params.hh"
 
 namespace vl::stage03 {
 
@@ -21,27 +19,9 @@ namespace {
 
 /// \brief A binary tree of boxes over the children, built with the surface area
 /// heuristic on the first ray after a change, walked near-first.
-class bvh final : public rtab_composite {
+class bvh final : public shapes::bvh_base {
 public:
-    explicit bvh(int leaf_size) : leaf_size_(leaf_size) {}
-
-    std::string type_name() const override { return "BVH"; }
-
-    void insert(std::unique_ptr<rtab_component> child) override {
-        if (child && child.get() != this && !finite_box(*child))
-            throw usage_error("BVH cannot hold " + child->type_name() +
-                              ": its box is unknown (it is unbounded or empty), so no box can hold it;"
-                              " put it beside the BVH in a LIST");
-        if (child.get() == this) throw usage_error("BVH: a composite cannot contain itself");
-        std::lock_guard lock(build_mutex_);
-        rtab_composite::insert(std::move(child));
-        built_.store(false, std::memory_order_release);
-    }
-    void delete_all_children() override {
-        std::lock_guard lock(build_mutex_);
-        rtab_composite::delete_all_children();
-        built_.store(false, std::memory_order_release);
-    }
+    explicit bvh(int leaf_size) : bvh_base(leaf_size) {}
 
     point min_point() const override {
         ensure_built();
@@ -54,16 +34,6 @@ public:
         throw not_implemented_error();
     }
 
-    void read(scene_reader& in) override {
-        leaf_size_ = shapes::read_bvh_leaf_size(in, leaf_size_);
-        while (!in.accept('}')) in.read_child(*this);
-    }
-    void write(std::ostream& s) const override {
-        s << "BVH { leaf_size " << leaf_size_ << '\n';
-        for (const auto& c : children_) s << "  " << *c << '\n';
-        s << '}';
-    }
-
 private:
     /// One node of the tree, all nodes in one vector (a suggestion).
     struct node {
@@ -74,17 +44,9 @@ private:
         std::uint32_t right = 0;
     };
 
-    /// Builds the tree the first time a ray needs it after a change (done: the lock makes
-    /// it safe when several threads arrive at once).
-    void ensure_built() const {
-        if (built_.load(std::memory_order_acquire)) return;
-        std::lock_guard lock(build_mutex_);
-        if (built_.load(std::memory_order_relaxed)) return;
-        build();
-        built_.store(true, std::memory_order_release);
-    }
-
-    void build() const {
+    /// Builds the tree over children_: called by ensure_built() (under its lock) the
+    /// first time a ray needs the tree after a change.
+    void build() const override {
         nodes_.clear();
         order_.clear();
         // TODO: build the tree over children_ (their boxes: min_point(), max_point()).
@@ -108,9 +70,6 @@ private:
         throw not_implemented_error();
     }
 
-    int leaf_size_;
-    mutable std::mutex build_mutex_;
-    mutable std::atomic<bool> built_{false};
     mutable std::vector<node> nodes_;                  // the tree, root first (made by build())
     mutable std::vector<const rtab_component*> order_;  // the children as the leaves hold them
 };
@@ -118,8 +77,7 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_bvh(int leaf_size) {
-    if (leaf_size < 1 || leaf_size > 64)
-        throw usage_error("make_bvh: leaf_size must be from 1 to 64, not " + std::to_string(leaf_size));
+    shapes::bvh_base::check_leaf_size(leaf_size);
     return std::make_unique<bvh>(leaf_size);
 }
 

@@ -1,93 +1,46 @@
 // The fractal spheres: see stage_03.hh for what each function must do, and README.md for
-// hints. Reading, writing and checking the values are done (vl/shape_params.hh); build()
-// is yours.
-#include <cmath>
-#include <ostream>
-#include <string>
-
+// hints. build() is yours. The rest is done in the base class,
+// vl::shapes::frac_sphere_base (framework/include/vl/composite_bases.hh): the values
+// center_, radius_, depth_, ratio_, surface_ and parent_direction_, the table
+// `directions`, reading and writing FRACSPH, the refusal of insert(), and the checks of
+// make_frac_sphere(). A fractal level is your bounding_sphere: build() uses its adopt().
 #include "bounding_sphere.hh"
 #include "stage_02.hh"
 #include "vl/not_implemented.hh"
-#include "vl/primitive.hh"
-#include "vl/scene_reader.hh"
-#include "vl/shape_params.hh"
 
 namespace vl::stage03 {
 
 namespace {
 
-constexpr int max_depth = shapes::frac_sphere_params::max_depth;
-constexpr int no_parent = -1;
-
-/// The six axis directions; direction k ^ 1 is the opposite of direction k.
-const vector directions[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-
 /// \brief A sphere with a fractal sphere of `ratio` times its radius on each side but the
 /// one towards its parent, all inside one tight bounding sphere.
-class frac_sphere final : public bounding_sphere {
+class frac_sphere final : public shapes::frac_sphere_base<bounding_sphere> {
 public:
-    frac_sphere(const point& center, double radius, int depth, double ratio, const surface& s,
-                int parent_direction = no_parent)
-        : center_(center.homogenized()), radius_(radius), depth_(depth), ratio_(ratio), surface_(s),
-          parent_direction_(parent_direction) {
-        build();
-    }
-
-    std::string type_name() const override { return "FRACSPH"; }
-
-    void insert(std::unique_ptr<rtab_component>) override {
-        throw usage_error("FRACSPH makes its own spheres: insert() cannot add to it"
-                          " (put the FRACSPH and the other object in a LIST)");
-    }
-
-    void read(scene_reader& in) override {
-        shapes::frac_sphere_params p{center_, radius_, depth_, ratio_};
-        std::vector<scene_reader::property> properties = p.properties(in);
-        add_surface_properties(properties, in, surface_, "FRACSPH");
-        in.read_block("FRACSPH", properties);
-        center_ = p.center;
-        radius_ = p.radius;
-        depth_ = p.depth;
-        ratio_ = p.ratio;
-        build();
-    }
-
-    void write(std::ostream& s) const override {
-        shapes::frac_sphere_params{center_, radius_, depth_, ratio_}.write(s);
-        write_surface(s, surface_);
-        s << " }";
-    }
+    /// Made by make<frac_sphere>(center, radius, depth, ratio, surface, parent_direction),
+    /// which calls build().
+    using frac_sphere_base::frac_sphere_base;
 
 private:
-    /// Makes the spheres: called by the constructor, and again by read() with what it read.
-    void build() {
-        bounding_sphere::delete_all_children();
+    /// Makes the spheres: called by make(), and again by read() with what it read (once
+    /// the spheres made before are gone).
+    void build() override {
         // TODO: the big sphere (stage02::make_sphere, with surface_ set on it), then, when
         // depth_ > 0, a frac_sphere of depth_ - 1 and radius radius_ * ratio_ in each of
         // the six `directions` but parent_direction_, touching the big sphere from
-        // outside (centre at distance radius_ + radius_ * ratio_). adopt() each. Then
+        // outside (centre at distance radius_ + radius_ * ratio_), each made by
+        // make<frac_sphere>(centre, radius, depth, ratio_, surface_, its parent's
+        // direction). adopt() the big sphere and each fractal sphere. Then
         // set_sphere() to the tight bound of stage_03.hh: r (1 + 2Q + ... + 2Q^D) around
         // center_. (A child placed in direction k has its parent in direction k ^ 1.)
         throw not_implemented_error();
     }
-
-    point center_;
-    double radius_;
-    int depth_;
-    double ratio_;
-    surface surface_;
-    int parent_direction_;  // the direction towards the parent, or no_parent
 };
 
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_frac_sphere(const point& center, double radius, int depth, double ratio) {
-    if (!checks::finite(center.homogenized()) || !std::isfinite(radius) || !(radius > 0))
-        throw usage_error("make_frac_sphere: the center must be finite and the radius a finite number > 0");
-    if (depth < 0 || depth > max_depth)
-        throw usage_error("make_frac_sphere: the depth must be from 0 to 7, not " + std::to_string(depth));
-    if (!(ratio > 0 && ratio < 1)) throw usage_error("make_frac_sphere: the ratio must be between 0 and 1");
-    return std::make_unique<frac_sphere>(center, radius, depth, ratio, surface{});
+    shapes::check_frac_sphere(center, radius, depth, ratio);
+    return frac_sphere::make<frac_sphere>(center, radius, depth, ratio);
 }
 
 }  // namespace vl::stage03

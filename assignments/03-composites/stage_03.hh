@@ -7,6 +7,16 @@
 /// .cc files of this folder (bounding_sphere.cc, frac_sphere.cc, box.cc, transformed.cc,
 /// bvh.cc; register.cc is done); add any helpers, members and files you like there.
 ///
+/// **What is done for you.** Each composite's class derives from a base class of the
+/// framework (vl/composite_bases.hh, namespace vl::shapes) that holds everything about it
+/// that is not its algorithm: its values (corners, matrices, leaf size, ...), its type
+/// name, reading and writing it in a scene file, the checks its factory makes, the
+/// refusals below that are not yours, and the BVH's building once at the first ray:
+/// bounding_sphere_base, frac_sphere_base, box_base, transformed_base and bvh_base. What
+/// is yours is the algorithm: how a ray is tested, how a bound grows, the tree, the box,
+/// the normal, and the bounding sphere's refusal of a child with an unknown box. Every
+/// sentence below is graded, whichever class does it: you may override what a base does.
+///
 /// **Why composites.** A composite is used exactly like a leaf, through
 /// vl::rtab_component (framework/include/vl/rt_base_objects.hh): a tracer never asks
 /// what it hit. Composites exist to make a ray *cheaper*: a ray that misses a bounding
@@ -186,8 +196,8 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 ///
 /// **Building.** The tree is built over the children present when the first ray is
 /// intersected after an insert() or delete_all_children(); building must be safe when
-/// several threads intersect their first rays at the same time (the stub does this part
-/// for you). Each node's box is the union of its children's boxes; a leaf holds at most
+/// several threads intersect their first rays at the same time (vl::shapes::bvh_base does
+/// this part for you). Each node's box is the union of its children's boxes; a leaf holds at most
 /// `leaf_size` children. Choose each split with the surface area heuristic (MacDonald
 /// and Booth 1990; Wald, "On fast Construction of SAH-based Bounding Volume
 /// Hierarchies", 2007): the expected cost of a split into A and B is proportional to

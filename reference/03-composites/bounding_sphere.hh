@@ -1,43 +1,52 @@
-// Reference: the bounding sphere, shared by bounding_sphere.cc and frac_sphere.cc (see
-// assignments/03-composites/stage_03.hh).
+// Reference: the bounding sphere, whole in this header since frac_sphere.cc builds on it
+// (see assignments/03-composites/stage_03.hh); its shell is vl::shapes::bounding_sphere_base.
 #pragma once
 
-#include <memory>
+#include <cmath>
 
-#include "stage_03.hh"
+#include "vl/bounds.hh"
+#include "vl/composite_bases.hh"
 
 namespace vl::stage03 {
 
-/// True when `c`'s box is known: both corners finite.
-bool finite_box(const rtab_component& c);
-
 /// \brief The thesis's container: children inside one sphere, which every ray tests first.
-class bounding_sphere : public rtab_composite {
+class bounding_sphere : public shapes::bounding_sphere_base {
 public:
-    std::string type_name() const override { return "BOUNDSPH"; }
-    void read(scene_reader& in) override;
     /// Refuses a child with an unknown box; then the sphere grows around the new child.
-    void insert(std::unique_ptr<rtab_component> child) override;
-    void delete_all_children() override;
-    point min_point() const override { return lo_; }
-    point max_point() const override { return hi_; }
+    void insert(std::unique_ptr<rtab_component> child) override {
+        if (child && child.get() != this && !shapes::finite_box(*child))
+            throw usage_error(type_name() + " cannot hold " + child->type_name() +
+                              ": its box is unknown (it is unbounded or empty), so no sphere can hold it;"
+                              " put it beside the " + type_name() + " in a LIST");
+        rtab_composite::insert(std::move(child));  // refuses a null pointer and the sphere itself
+        // The child is in: grow the box and the sphere around it.
+        std::unique_ptr<rtab_component> last = std::move(children_.back());
+        children_.pop_back();
+        adopt(std::move(last));
+    }
 
 protected:
-    /// Adds `child` (whose box is known) and grows the box and the sphere around it.
-    void adopt(std::unique_ptr<rtab_component> child);
-    /// Replaces the sphere around the children's boxes by a tighter one that still holds
-    /// every child (a fractal sphere knows its own).
-    void set_sphere(const point& center, double radius) {
-        bound_center_ = center;
-        bound_radius_ = radius;
+    void adopt(std::unique_ptr<rtab_component> child) override {
+        const point a = child->min_point(), b = child->max_point();
+        if (children_.empty()) {
+            lo_ = a;
+            hi_ = b;
+        } else {
+            lo_ = point(std::fmin(lo_.x, a.x), std::fmin(lo_.y, a.y), std::fmin(lo_.z, a.z));
+            hi_ = point(std::fmax(hi_.x, b.x), std::fmax(hi_.y, b.y), std::fmax(hi_.z, b.z));
+        }
+        children_.push_back(std::move(child));
+        // The smallest sphere around the box: its centre, half its diagonal.
+        bound_center_ = point((lo_.x + hi_.x) / 2, (lo_.y + hi_.y) / 2, (lo_.z + hi_.z) / 2);
+        bound_radius_ = (hi_ - lo_).length() / 2;
     }
 
 private:
-    intersection find_intersection(const ray& r) const override;
-
-    point lo_ = NaN_point, hi_ = NaN_point;  // the union of the children's boxes
-    point bound_center_ = NaN_point;
-    double bound_radius_ = 0;
+    intersection find_intersection(const ray& r) const override {
+        if (children_.empty() || !hits_sphere(r, bound_center_, bound_radius_)) return intersection::none();
+        const intersection nearest = nearest_child_hit(r);
+        return nearest.hit() ? nearest : intersection::composite_only(this);
+    }
 };
 
 }  // namespace vl::stage03

@@ -6,22 +6,17 @@
 // holds its two children's boxes, in floats rounded outwards; walked near-first with a
 // slab test that takes the ray's reciprocal direction once per ray (A. Williams,
 // S. Barrus, R. K. Morley and P. Shirley, "An efficient and robust ray-box intersection
-// algorithm", JGT 10(1), 2005).
+// algorithm", JGT 10(1), 2005). The shell (the children, reading, writing, building once
+// at the first ray) is vl::shapes::bvh_base.
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <limits>
-#include <mutex>
-#include <ostream>
 #include <vector>
 
-#include "bounding_sphere.hh"
 #include "stage_03.hh"
 #include "vl/bounds.hh"
-#include "vl/scene_reader.hh"
-#include "vl/shape_params.hh"
+#include "vl/composite_bases.hh"
 #include "vl/stats.hh"
 
 namespace vl::stage03 {
@@ -97,27 +92,9 @@ struct slab_ray {
 constexpr double far_stretch = 1 + 2 * (3 * 0x1p-53 / (1 - 3 * 0x1p-53));
 
 /// \brief The tree over the children, built on the first ray after a change.
-class bvh final : public rtab_composite {
+class bvh final : public shapes::bvh_base {
 public:
-    explicit bvh(int leaf_size) : leaf_size_(leaf_size) {}
-
-    std::string type_name() const override { return "BVH"; }
-
-    void insert(std::unique_ptr<rtab_component> child) override {
-        if (child && child.get() != this && !finite_box(*child))
-            throw usage_error("BVH cannot hold " + child->type_name() +
-                              ": its box is unknown (it is unbounded or empty), so no box can hold it;"
-                              " put it beside the BVH in a LIST");
-        if (child.get() == this) throw usage_error("BVH: a composite cannot contain itself");
-        std::lock_guard lock(build_mutex_);
-        rtab_composite::insert(std::move(child));
-        built_.store(false, std::memory_order_release);
-    }
-    void delete_all_children() override {
-        std::lock_guard lock(build_mutex_);
-        rtab_composite::delete_all_children();
-        built_.store(false, std::memory_order_release);
-    }
+    explicit bvh(int leaf_size) : bvh_base(leaf_size) {}
 
     point min_point() const override {
         ensure_built();
@@ -126,16 +103,6 @@ public:
     point max_point() const override {
         ensure_built();
         return order_.empty() ? NaN_point : point(root_.hi[0], root_.hi[1], root_.hi[2]);
-    }
-
-    void read(scene_reader& in) override {
-        leaf_size_ = shapes::read_bvh_leaf_size(in, leaf_size_);
-        while (!in.accept('}')) in.read_child(*this);
-    }
-    void write(std::ostream& s) const override {
-        s << "BVH { leaf_size " << leaf_size_ << '\n';
-        for (const auto& c : children_) s << "  " << *c << '\n';
-        s << '}';
     }
 
 private:
@@ -160,15 +127,7 @@ private:
         const rtab_component* object;
     };
 
-    void ensure_built() const {
-        if (built_.load(std::memory_order_acquire)) return;
-        std::lock_guard lock(build_mutex_);
-        if (built_.load(std::memory_order_relaxed)) return;
-        build();
-        built_.store(true, std::memory_order_release);
-    }
-
-    void build() const {
+    void build() const override {
         nodes_.clear();
         order_.clear();
         root_ = {};
@@ -347,9 +306,6 @@ private:
         return best.hit() ? best : intersection::composite_only(this);
     }
 
-    int leaf_size_;
-    mutable std::mutex build_mutex_;
-    mutable std::atomic<bool> built_{false};
     mutable box3 root_;                                 // the children's box, exactly
     mutable subtree root_subtree_;                     // the root: nodes_[0], or one leaf
     mutable std::vector<node> nodes_;                  // the inner nodes, root first (built by ensure_built)
@@ -359,8 +315,7 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_bvh(int leaf_size) {
-    if (leaf_size < 1 || leaf_size > 64)
-        throw usage_error("make_bvh: leaf_size must be from 1 to 64, not " + std::to_string(leaf_size));
+    shapes::bvh_base::check_leaf_size(leaf_size);
     return std::make_unique<bvh>(leaf_size);
 }
 

@@ -1,23 +1,12 @@
 // The bounding sphere (stage_03.hh): its children inside the sphere around their box.
 #include "bounding_sphere.hh"
 
-#include <cmath>
-
 #include "vl/bounds.hh"
-#include "vl/scene_reader.hh"
 
 namespace vl::stage03 {
 
-namespace {
-bool finite(const point& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-}  // namespace
-
-bool finite_box(const rtab_component& c) { return finite(c.min_point()) && finite(c.max_point()); }
-
-void bounding_sphere::read(scene_reader& in) { in.read_children(*this); }
-
 void bounding_sphere::insert(std::unique_ptr<rtab_component> child) {
-    if (child && child.get() != this && !finite_box(*child))
+    if (child && child.get() != this && !shapes::finite_box(*child))
         throw usage_error(type_name() + " refuses " + child->type_name() + ": the " + child->type_name() +
                           " has no finite box, so no sphere holds it; put it next to the " + type_name() +
                           " in a LIST");
@@ -25,12 +14,6 @@ void bounding_sphere::insert(std::unique_ptr<rtab_component> child) {
     std::unique_ptr<rtab_component> added = std::move(children_.back());
     children_.pop_back();
     adopt(std::move(added));
-}
-
-void bounding_sphere::delete_all_children() {
-    rtab_composite::delete_all_children();
-    lo_ = hi_ = bound_center_ = NaN_point;
-    bound_radius_ = 0;
 }
 
 void bounding_sphere::adopt(std::unique_ptr<rtab_component> child) {

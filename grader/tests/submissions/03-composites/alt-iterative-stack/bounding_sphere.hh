@@ -1,44 +1,24 @@
 // The bounding sphere's class, shared by bounding_sphere.cc and frac_sphere.cc (a fractal
-// sphere is a bounding sphere that makes its own children). See stage_03.hh for what each
-// function must do. You may change this file: add members and helpers as you need.
+// sphere is a bounding sphere that makes its own children); its shell is
+// vl::shapes::bounding_sphere_base.
 #pragma once
 
-#include <memory>
-
-#include "stage_03.hh"
+#include "vl/composite_bases.hh"
 
 namespace vl::stage03 {
 
-/// True when `c`'s box is known: both corners finite (bounding_sphere.cc; bvh.cc uses it too).
-bool finite_box(const rtab_component& c);
-
 /// \brief The thesis's container: children inside one sphere, which every ray tests first.
-class bounding_sphere : public rtab_composite {
+class bounding_sphere : public shapes::bounding_sphere_base {
 public:
-    std::string type_name() const override { return "BOUNDSPH"; }
-    void read(scene_reader& in) override;
     /// Refuses a child with an unknown box; then the sphere grows around the new child.
     void insert(std::unique_ptr<rtab_component> child) override;
-    void delete_all_children() override;
-    point min_point() const override { return lo_; }
-    point max_point() const override { return hi_; }
 
 protected:
     /// Adds `child` (whose box is known) and grows the box and the sphere around it.
-    void adopt(std::unique_ptr<rtab_component> child);
-    /// Replaces the sphere around the children's boxes by a tighter one that still holds
-    /// every child (a fractal sphere knows its own).
-    void set_sphere(const point& center, double radius) {
-        bound_center_ = center;
-        bound_radius_ = radius;
-    }
+    void adopt(std::unique_ptr<rtab_component> child) override;
 
 private:
     intersection find_intersection(const ray& r) const override;
-
-    point lo_ = NaN_point, hi_ = NaN_point;  // the union of the children's boxes
-    point bound_center_ = NaN_point;         // the sphere every ray tests first
-    double bound_radius_ = 0;
 };
 
 }  // namespace vl::stage03

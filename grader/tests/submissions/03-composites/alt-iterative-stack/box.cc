@@ -1,26 +1,21 @@
 // The box of six polygons (stage_03.hh). A ray tests the faces that face it first; the
 // faces it would leave through only when none of those is hit (a ray from inside).
 #include <cmath>
-#include <limits>
-#include <ostream>
+#include <vector>
 
 #include "stage_02.hh"
 #include "stage_03.hh"
 #include "vl/bounds.hh"
-#include "vl/primitive.hh"
-#include "vl/scene_reader.hh"
-#include "vl/shape_params.hh"
+#include "vl/composite_bases.hh"
 
 namespace vl::stage03 {
 
 namespace {
 
 /// \brief An axis-aligned box made of its six faces, tested as a box first.
-class box final : public rtab_composite {
+class box final : public shapes::box_base {
 public:
     box(const point& lo, const point& hi) { set_geometry(lo, hi); }
-
-    std::string type_name() const override { return "BOX"; }
 
     void insert(std::unique_ptr<rtab_component>) override {
         throw usage_error("BOX: insert() refused, a box consists of exactly its six faces; "
@@ -29,9 +24,6 @@ public:
     void delete_all_children() override {
         throw usage_error("BOX: delete_all_children() refused, the six faces are the box");
     }
-
-    point min_point() const override { return lo_; }
-    point max_point() const override { return hi_; }
 
     bool contains(const point& p) const override {
         const point q = p.homogenized();
@@ -61,30 +53,9 @@ public:
         return vector(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0);
     }
 
-    void read(scene_reader& in) override {
-        shapes::box_params p{lo_, hi_};
-        source_location where;
-        std::vector<scene_reader::property> properties = p.properties(in, where);
-        add_surface_properties(properties, in, surface_, "BOX");
-        in.read_block("BOX", properties);
-        if (!checks::below(p.lo, p.hi))
-            in.fail(where, "min of BOX must be below max in x, y and z (a box has volume)");
-        set_geometry(p.lo, p.hi);
-    }
-
-    void write(std::ostream& s) const override {
-        shapes::box_params{lo_, hi_}.write(s);
-        write_surface(s, surface_);
-        s << " }";
-    }
-
 private:
-    /// Stores the corners and makes the faces: called by the constructor, and again by
-    /// read() with what it read (and after the surface keys, so the faces get them).
-    void set_geometry(const point& lo, const point& hi) {
-        lo_ = lo.homogenized();
-        hi_ = hi.homogenized();
-        children_.clear();
+    /// Makes the faces: called by set_geometry(), from the constructor and from read().
+    void make_faces() override {
         outward_.clear();
         const double x[2] = {lo_.x, hi_.x}, y[2] = {lo_.y, hi_.y}, z[2] = {lo_.z, hi_.z};
         for (int side = 0; side < 2; ++side) {
@@ -120,18 +91,13 @@ private:
         return best.hit() ? best : intersection::composite_only(this);
     }
 
-    point lo_, hi_;
     std::vector<int> outward_;  // +1 for the faces at hi, -1 at lo, in the order of children_
-    surface surface_;
 };
 
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_box(const point& lo, const point& hi) {
-    if (!checks::finite(lo.homogenized()) || !checks::finite(hi.homogenized()))
-        throw usage_error("make_box: both corners must be finite points");
-    if (!checks::below(lo.homogenized(), hi.homogenized()))
-        throw usage_error("make_box: lo must be below hi in x, y and z (a box has volume)");
+    shapes::box_base::check_corners(lo, hi);
     return std::make_unique<box>(lo, hi);
 }
 

@@ -2,17 +2,13 @@
 // walked with a stack, the child on the side the ray comes from first.
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <mutex>
-#include <ostream>
 #include <vector>
 
-#include "bounding_sphere.hh"
 #include "stage_03.hh"
 #include "vl/bounds.hh"
-#include "vl/scene_reader.hh"
+#include "vl/composite_bases.hh"
 
 namespace vl::stage03 {
 
@@ -20,26 +16,9 @@ namespace {
 
 /// \brief A binary tree of boxes over the children, built with the surface area
 /// heuristic on the first ray after a change, walked near-first.
-class bvh final : public rtab_composite {
+class bvh final : public shapes::bvh_base {
 public:
-    explicit bvh(int leaf_size) : leaf_size_(leaf_size) {}
-
-    std::string type_name() const override { return "BVH"; }
-
-    void insert(std::unique_ptr<rtab_component> child) override {
-        if (child && child.get() != this && !finite_box(*child))
-            throw usage_error("BVH cannot hold " + child->type_name() +
-                              ": its box is unknown (it is unbounded or empty), so no box can hold it;"
-                              " put it beside the BVH in a LIST");
-        std::lock_guard lock(build_mutex_);
-        rtab_composite::insert(std::move(child));
-        built_.store(false, std::memory_order_release);
-    }
-    void delete_all_children() override {
-        std::lock_guard lock(build_mutex_);
-        rtab_composite::delete_all_children();
-        built_.store(false, std::memory_order_release);
-    }
+    explicit bvh(int leaf_size) : bvh_base(leaf_size) {}
 
     point min_point() const override {
         ensure_built();
@@ -48,20 +27,6 @@ public:
     point max_point() const override {
         ensure_built();
         return nodes_.empty() ? NaN_point : nodes_[0].hi;
-    }
-
-    void read(scene_reader& in) override {
-        in.expect('{', "after BVH");
-        if (in.peek().type == token::kind::word && in.peek().text == "leaf_size") {
-            in.next();
-            leaf_size_ = in.read_int("leaf_size of BVH", 1, 64);
-        }
-        while (!in.accept('}')) in.read_child(*this);
-    }
-    void write(std::ostream& s) const override {
-        s << "BVH { leaf_size " << leaf_size_ << '\n';
-        for (const auto& c : children_) s << "  " << *c << '\n';
-        s << '}';
     }
 
 private:
@@ -159,17 +124,7 @@ private:
                          });
     }
 
-    /// Builds the tree the first time a ray needs it after a change (done: the lock makes
-    /// it safe when several threads arrive at once).
-    void ensure_built() const {
-        if (built_.load(std::memory_order_acquire)) return;
-        std::lock_guard lock(build_mutex_);
-        if (built_.load(std::memory_order_relaxed)) return;
-        build();
-        built_.store(true, std::memory_order_release);
-    }
-
-    void build() const {
+    void build() const override {
         nodes_.clear();
         order_.clear();
         if (children_.empty()) return;
@@ -226,9 +181,6 @@ private:
         return best.hit() ? best : intersection::composite_only(this);
     }
 
-    int leaf_size_;
-    mutable std::mutex build_mutex_;
-    mutable std::atomic<bool> built_{false};
     mutable std::vector<node> nodes_;                  // the tree, root first (made by build())
     mutable std::vector<const rtab_component*> order_;  // the children as the leaves hold them
 };
@@ -236,8 +188,7 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_bvh(int leaf_size) {
-    if (leaf_size < 1 || leaf_size > 64)
-        throw usage_error("make_bvh: leaf_size must be from 1 to 64, not " + std::to_string(leaf_size));
+    shapes::bvh_base::check_leaf_size(leaf_size);
     return std::make_unique<bvh>(leaf_size);
 }
 

@@ -9,11 +9,9 @@
 // and walked near-first with a stack.
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <mutex>
 #include <numeric>
 #include <ostream>
 #include <vector>
@@ -22,7 +20,7 @@
 #include "stage_03.hh"
 #include "vl/bounds.hh"
 #include "vl/error.hh"
-#include "vl/scene_reader.hh"
+#include "vl/composite_bases.hh"
 
 namespace vl::stage03 {
 
@@ -62,11 +60,9 @@ std::uint64_t spread(std::uint64_t v) {
     return v;
 }
 
-class linear_bvh final : public rtab_composite {
+class linear_bvh final : public shapes::bvh_base {
 public:
-    explicit linear_bvh(int leaf_size) : leaf_size_(leaf_size) {}
-
-    std::string type_name() const override { return "BVH"; }
+    explicit linear_bvh(int leaf_size) : bvh_base(leaf_size) {}
 
     void insert(std::unique_ptr<rtab_component> child) override {
         if (!child) throw usage_error("BVH: insert() was given a null pointer, not an object");
@@ -77,14 +73,7 @@ public:
                               " has no finite box (it is unbounded or empty), so no box of the tree holds it;"
                               " put the " + kind + " beside the BVH in a LIST");
         }
-        std::lock_guard lock(build_mutex_);
-        children_.push_back(std::move(child));
-        built_.store(false, std::memory_order_release);
-    }
-    void delete_all_children() override {
-        std::lock_guard lock(build_mutex_);
-        children_.clear();
-        built_.store(false, std::memory_order_release);
+        adopt(std::move(child));  // marks the tree to be built again
     }
 
     point min_point() const override {
@@ -96,20 +85,6 @@ public:
         return nodes_.empty() ? NaN_point : nodes_.front().box.high();
     }
 
-    void read(scene_reader& in) override {
-        in.expect('{', "after BVH");
-        if (in.peek().type == token::kind::word && in.peek().text == "leaf_size") {
-            in.next();
-            leaf_size_ = in.read_int("leaf_size of BVH", 1, 64);
-        }
-        while (!in.accept('}')) in.read_child(*this);
-    }
-    void write(std::ostream& s) const override {
-        s << "BVH { leaf_size " << leaf_size_ << '\n';
-        for (const auto& c : children_) s << "  " << *c << '\n';
-        s << '}';
-    }
-
 private:
     /// A node; its left child (an inner node's) is the next node in nodes_.
     struct node {
@@ -119,15 +94,7 @@ private:
         std::uint32_t right = 0;  // an inner node: the index of its right child
     };
 
-    void ensure_built() const {
-        if (built_.load(std::memory_order_acquire)) return;
-        std::lock_guard lock(build_mutex_);
-        if (built_.load(std::memory_order_relaxed)) return;
-        build();
-        built_.store(true, std::memory_order_release);
-    }
-
-    void build() const {
+    void build() const override {
         nodes_.clear();
         leaves_.clear();
         boxes_.clear();
@@ -280,9 +247,6 @@ private:
         return best.hit() ? best : intersection::composite_only(this);
     }
 
-    int leaf_size_;
-    mutable std::mutex build_mutex_;
-    mutable std::atomic<bool> built_{false};
     mutable std::vector<node> nodes_;                    // the tree, root first, depth first
     mutable std::vector<const rtab_component*> leaves_;  // the children in Morton order
     mutable std::vector<aabb> boxes_;                    // while building: their boxes
@@ -292,8 +256,7 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_bvh(int leaf_size) {
-    if (leaf_size < 1 || leaf_size > 64)
-        throw usage_error("make_bvh: leaf_size must be from 1 to 64, not " + std::to_string(leaf_size));
+    shapes::bvh_base::check_leaf_size(leaf_size);
     return std::make_unique<linear_bvh>(leaf_size);
 }
 
