@@ -190,6 +190,24 @@ inline double unit_gap(const vector& got, const vector& want) {
     return static_cast<double>(std::max({std::fabs(got.x - w.x), std::fabs(got.y - w.y), std::fabs(got.z - w.z)}));
 }
 
+/// \brief zero_t, positive or negative, hides a hit up to its absolute value: each of `rays`
+/// meets `o` (`described`, as the messages say) at t = 0.3, so with each of a list of
+/// zero_t it must hit there (± 1e-12) when |zero_t| < 0.3 and miss otherwise.
+inline void check_zero_t_hides_hit_at_0_3(tally& t, primitive& o, const std::string& described,
+                                          std::initializer_list<ray> rays) {
+    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
+        o.set_surface(testing::with_zero_t(zero_t));
+        for (const ray& r : rays) {
+            const bool want = 0.3 > std::fabs(zero_t);
+            const intersection i = o.intersect(r);
+            t.check(want ? hit_near(i, &o, 0.3, 1e-12) : clean_miss(i), [&] {
+                return show(r) + " meets " + described + " at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
+                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, &o);
+            });
+        }
+    }
+}
+
 /// Checks that the box of `o` (`described` in words) runs exactly from `want_lo` to `want_hi`.
 inline void check_exact_box(tally& t, const rtab_component& o, const std::string& described, const point& want_lo,
                             const point& want_hi) {
@@ -346,6 +364,19 @@ inline void compare_surface(const surface& got, const surface& want, const std::
             return who + " has " + name + " " + num(values.first) + " where the object had " + num(values.second) +
                    " (allowed: 4 units in the last place)";
         });
+}
+
+/// Reads `text`, which describes `want` (a `type`) with the surface `surf`: what your read()
+/// makes of it must have that surface and be the same object, as `same_object(got, what)`
+/// checks.
+template <class Object, class SameObject>
+void check_read_as(tally& t, const std::string& text, const std::string& type, Object& want, const surface& surf,
+                   SameObject&& same_object) {
+    const auto got = read_one(text);
+    want.set_surface(surf);
+    const std::string what = "the " + type + " read from " + text;
+    compare_surface(surface_of(*got), surf, what, t);
+    same_object(*got, what);
 }
 
 /// \brief The round trip of a scene-file test: write() of `original` (an object of type

@@ -202,20 +202,9 @@ TEST_CASE("plane: zero_t, positive or negative, hides a hit up to its absolute v
     tally t("a plane hit at t = 0.3 with different zero_t");
     const flat p{point(0, -0.3, 0), vector(0, 1, 0)};
     const auto pl = make_plane(p.on, p.normal);
-    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
-        vl::surface s;
-        s.zero_t = zero_t;
-        pl->set_surface(s);
-        for (const double direction : {-1.0, 1.0}) {
-            const ray r(point(0, -0.3 - direction * 0.3, 0), vector(0, direction, 0));
-            const bool want = 0.3 > std::fabs(zero_t);
-            const intersection i = pl->intersect(r);
-            t.check(want ? hit_near(i, pl.get(), 0.3, 1e-12) : clean_miss(i), [&] {
-                return show(r) + " meets " + describe(p) + " at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
-                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, pl.get());
-            });
-        }
-    }
+    // From above (down along -y) and from below (up along +y).
+    check_zero_t_hides_hit_at_0_3(t, *pl, describe(p),
+                                  {ray(point(0, 0, 0), vector(0, -1, 0)), ray(point(0, -0.6, 0), vector(0, 1, 0))});
     t.report();
 }
 
@@ -305,11 +294,9 @@ TEST_CASE("plane: a PLANE in a scene file is the plane its point, normal and sur
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     const std::string text = "PLANE { normal " + num(p.normal.x) + " " + num(p.normal.y) + " " + num(p.normal.z) + " point (" +
                              num(p.on.x) + ", " + num(p.on.y) + ", " + num(p.on.z) + ")" + surface_text(surf) + " }";
-    const auto got = read_one(text);
     const auto want = make_plane(p.on, p.normal);
-    want->set_surface(surf);
-    compare_surface(surface_of(*got), surf, "the PLANE read from " + text, t);
-    check_same_plane(t, *got, *want, p, "the PLANE read from " + text);
+    check_read_as(t, text, "PLANE", *want, surf,
+                  [&](const rtab_component& got, const std::string& what) { check_same_plane(t, got, *want, p, what); });
     t.report();
 }
 

@@ -304,19 +304,7 @@ TEST_CASE("polygon: zero_t, positive or negative, hides a hit up to its absolute
     tally t("a polygon hit at t = 0.3 with different zero_t");
     const shape v = {point(0, 0, -0.3), point(1, 0, -0.3), point(1, 1, -0.3), point(0, 1, -0.3)};
     const auto p = make_polygon(v);
-    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
-        vl::surface s;
-        s.zero_t = zero_t;
-        p->set_surface(s);
-        for (const ray& r : {ray(point(0.5, 0.25, 0), vector(0, 0, -1)), ray(point(0.5, 0.25, -0.6), vector(0, 0, 1))}) {
-            const bool want = 0.3 > std::fabs(zero_t);
-            const intersection i = p->intersect(r);
-            t.check(want ? hit_near(i, p.get(), 0.3, 1e-12) : clean_miss(i), [&] {
-                return show(r) + " meets the unit square at z = -0.3 at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
-                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, p.get());
-            });
-        }
-    }
+    check_zero_t_hides_hit_at_0_3(t, *p, "the unit square at z = -0.3", {ray(point(0.5, 0.25, 0), vector(0, 0, -1)), ray(point(0.5, 0.25, -0.6), vector(0, 0, 1))});
     t.report();
 }
 
@@ -532,11 +520,9 @@ TEST_CASE("polygon: a POLYGON in a scene file is the polygon its vertices and su
     const shape s = regular(5, point(0.1 + 1e-13, -1.0 / 3, 7.25), 2.0 / 3, u, v, 0.1);
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     const std::string text = polygon_text(s, surf, true);
-    const auto got = read_one(text);
     const auto want = make_polygon(s);
-    want->set_surface(surf);
-    compare_surface(surface_of(*got), surf, "the POLYGON read from " + text, t);
-    check_same_polygon(t, *got, *want, s, "the POLYGON read from " + text);
+    check_read_as(t, text, "POLYGON", *want, surf,
+                  [&](const rtab_component& got, const std::string& what) { check_same_polygon(t, got, *want, s, what); });
     t.report();
 }
 

@@ -374,11 +374,9 @@ TEST_CASE("sphere: a SPHERE in a scene file is the sphere its centre, radius and
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     const std::string text = "SPHERE { radius " + num(b.radius) + " center (" + num(b.center.x) + ", " + num(b.center.y) + ", " +
                              num(b.center.z) + ")" + surface_text(surf) + " }";
-    const auto got = read_one(text);
     const auto want = make_sphere(b.center, b.radius);
-    want->set_surface(surf);
-    compare_surface(surface_of(*got), surf, "the SPHERE read from " + text, t);
-    check_same_sphere(t, *got, *want, b, "the SPHERE read from " + text);
+    check_read_as(t, text, "SPHERE", *want, surf,
+                  [&](const rtab_component& got, const std::string& what) { check_same_sphere(t, got, *want, b, what); });
     t.report();
 }
 

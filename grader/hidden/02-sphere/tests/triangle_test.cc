@@ -259,19 +259,7 @@ TEST_CASE("triangle: zero_t, positive or negative, hides a hit up to its absolut
     tally t("a triangle hit at t = 0.3 with different zero_t");
     const corners k{point(0, 0, -0.3), point(1, 0, -0.3), point(0, 1, -0.3)};
     const auto tri = make_triangle(k.a, k.b, k.c);
-    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
-        vl::surface s;
-        s.zero_t = zero_t;
-        tri->set_surface(s);
-        for (const ray& r : {ray(point(0.25, 0.25, 0), vector(0, 0, -1)), ray(point(0.25, 0.25, -0.6), vector(0, 0, 1))}) {
-            const bool want = 0.3 > std::fabs(zero_t);
-            const intersection i = tri->intersect(r);
-            t.check(want ? hit_near(i, tri.get(), 0.3, 1e-12) : clean_miss(i), [&] {
-                return show(r) + " meets " + describe(k) + " at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
-                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, tri.get());
-            });
-        }
-    }
+    check_zero_t_hides_hit_at_0_3(t, *tri, describe(k), {ray(point(0.25, 0.25, 0), vector(0, 0, -1)), ray(point(0.25, 0.25, -0.6), vector(0, 0, 1))});
     t.report();
 }
 
@@ -485,11 +473,9 @@ TEST_CASE("triangle: a TRIANGLE in a scene file is the triangle its vertices and
     const corners k{point(0.1 + 1e-13, -1.0 / 3, 7.25), point(1.0 / 7, 2.5, -0.2), point(-2.0 / 3, 0.4, 1e-7)};
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     const std::string text = triangle_text(k, surf, true);
-    const auto got = read_one(text);
     const auto want = make_triangle(k.a, k.b, k.c);
-    want->set_surface(surf);
-    compare_surface(surface_of(*got), surf, "the TRIANGLE read from " + text, t);
-    check_same_triangle(t, *got, *want, k, "the TRIANGLE read from " + text);
+    check_read_as(t, text, "TRIANGLE", *want, surf,
+                  [&](const rtab_component& got, const std::string& what) { check_same_triangle(t, got, *want, k, what); });
     t.report();
 }
 

@@ -419,16 +419,11 @@ TEST_CASE("boundsph: min_point() and max_point() are the union of the children's
     dice random(130);
     auto bs = make_bounding_sphere();
     probe_set set;
-    rvec lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
+    box_union children;
     for (int k = 0; k < 12; ++k) {
-        const std::size_t before = set.all.size();
         random_probes(set, *bs, random, 1, random.in_cube(-4, 4), random.uniform(0.2, 3));
-        (void)before;
-        const rvec a = to_r(set.all.back()->min_point()), b = to_r(set.all.back()->max_point());
-        lo = {std::min(lo.x, a.x), std::min(lo.y, a.y), std::min(lo.z, a.z)};
-        hi = {std::max(hi.x, b.x), std::max(hi.y, b.y), std::max(hi.z, b.z)};
-        check_point(t, "min_point() of the BOUNDSPH of its first " + std::to_string(k + 1) + " children", bs->min_point(), lo, 0);
-        check_point(t, "max_point() of the BOUNDSPH of its first " + std::to_string(k + 1) + " children", bs->max_point(), hi, 0);
+        children.add(*set.all.back());
+        check_box_is(t, *bs, children, "the BOUNDSPH of its first " + std::to_string(k + 1) + " children");
     }
     auto two = make_bounding_sphere();
     check_contains_of_two_spheres(t, *two, "BOUNDSPH");

@@ -3,6 +3,7 @@
 // says for a composite of two spheres, the children insert() must refuse, and the round
 // trip of a composite of probes through a scene file.
 
+#include <algorithm>
 #include <functional>
 #include <initializer_list>
 #include <memory>
@@ -12,6 +13,22 @@
 #include "hidden_support.hh"
 
 namespace vl::stage03::hidden {
+
+/// The union of the children's boxes, in long double, as they are added (none at first).
+struct box_union {
+    rvec lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
+    void add(const rtab_component& child) {
+        const rvec a = to_r(child.min_point()), b = to_r(child.max_point());
+        lo = {std::min(lo.x, a.x), std::min(lo.y, a.y), std::min(lo.z, a.z)};
+        hi = {std::max(hi.x, b.x), std::max(hi.y, b.y), std::max(hi.z, b.z)};
+    }
+};
+
+/// Checks that the box of `c` (`of`, in words) is exactly the union `u`.
+inline void check_box_is(tally& t, const rtab_component& c, const box_union& u, const std::string& of) {
+    check_point(t, "min_point() of " + of, c.min_point(), u.lo, 0);
+    check_point(t, "max_point() of " + of, c.max_point(), u.hi, 0);
+}
 
 /// Puts the unit spheres around (0, 0, 0) and (5, 0, 0) into `c` (an empty `type`) and
 /// checks contains(): true in either sphere, false between them and beside them.
