@@ -1,12 +1,16 @@
 #pragma once
 /// \file
-/// \brief Helpers for stage 01's public tests: distances between tuples and matrices.
+/// \brief Helpers for stage 01's public tests: distances between tuples and matrices,
+/// and how the tests of every stage print numbers, tuples and rays in their messages.
 /// You need not read this file to do the assignment.
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <string>
 
 #include "stage_01.hh"
+#include "vl/ray.hh"
 
 namespace vl::test01 {
 
@@ -52,5 +56,36 @@ inline double degrees_between(const vector& a, const vector& b) {
 
 /// The unit round-off of double, 2^-53.
 inline constexpr double unit_roundoff = 0x1p-53;
+
+// ---------------------------------------------------------------------------------------
+// Printing values in messages (the later stages' tests print through these too)
+// ---------------------------------------------------------------------------------------
+
+/// `x` in the shortest form that reads back as exactly `x` (so a tolerance such as 1e-12
+/// is never printed as 0.0, and two different numbers never print alike).
+inline std::string num(double x) {
+    if (std::isnan(x)) return "NaN";
+    if (std::isinf(x)) return x > 0 ? "infinity" : "-infinity";
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, r.ptr);
+}
+/// `(x, y, z)` of a point (homogenized) or a vector, each at full precision.
+inline std::string show(const point& p) {
+    const point h = p.w == 1 ? p : p.homogenized();
+    return "(" + num(h.x) + ", " + num(h.y) + ", " + num(h.z) + ")";
+}
+inline std::string show(const vector& v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
+/// The ray in words: "the ray from (..) towards (..)".
+inline std::string show(const ray& r) { return "the ray from " + show(r.origin()) + " towards " + show(r.direction()); }
+/// A matrix row by row: "[a b c d; e f g h; ...]".
+inline std::string show(const matrix& m) {
+    std::string s = "[";
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) s += num(m(r, c)) + (c < 3 ? " " : "");
+        s += r < 3 ? "; " : "]";
+    }
+    return s;
+}
 
 }  // namespace vl::test01

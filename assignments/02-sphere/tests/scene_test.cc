@@ -23,16 +23,6 @@ void check_same_hits(const rtab_component& a, const rtab_component& b) {
     }
 }
 
-// Checks the message of the vl::file_error that reading `text` throws.
-std::string read_error(const std::string& text) {
-    try {
-        read_object(text);
-    } catch (const file_error& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
-
 // Reads `text`, writes the object, reads that back: the second object must write the
 // same text, and have the same type, colour, zero_t and hits as the first.
 void check_round_trip(const std::string& text) {

@@ -8,50 +8,28 @@
 
 #include "vl/catch.hh"
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <numbers>
-#include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "all_pieces.hh"
+#include "../../02-sphere/tests/test_support.hh"
 #include "stage_03.hh"
 #include "vl/object_list.hh"
-#include "vl/scene_reader.hh"
 #include "vl/stats.hh"
 
 namespace vl::stage03::testing {
 
-// ---------------------------------------------------------------------------------------
-// Printing values in messages
-// ---------------------------------------------------------------------------------------
+// The ray_through(), random numbers, messages and scene-file readers of stage 02's tests.
+using stage02::testing::num;
+using stage02::testing::random_numbers;
+using stage02::testing::ray_through;
+using stage02::testing::read_error;
+using stage02::testing::read_object;
+using stage02::testing::show;
+using stage02::testing::written;
 
-/// `x` in the shortest form that reads back as exactly `x`.
-inline std::string num(double x) {
-    if (std::isnan(x)) return "NaN";
-    if (std::isinf(x)) return x > 0 ? "infinity" : "-infinity";
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, x);
-    return std::string(buf, r.ptr);
-}
-/// `(x, y, z)` of a point (homogenized) or a vector.
-inline std::string show(const point& p) {
-    const point h = p.w == 1 ? p : p.homogenized();
-    return "(" + num(h.x) + ", " + num(h.y) + ", " + num(h.z) + ")";
-}
-inline std::string show(const vector& v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
-/// "the ray from (..) towards (..)".
-inline std::string show(const ray& r) { return "the ray from " + show(r.origin()) + " towards " + show(r.direction()); }
-/// What an intersection says: "a hit at t = 4 on a SPHERE", "composite_only of the BVH", "a miss".
-inline std::string show(const intersection& i) {
-    if (i.is_miss()) return "a miss (intersection::none())";
-    if (i.is_composite_only()) return "composite_only of a " + i.object->type_name() + " (t == 0)";
-    return "a hit at t = " + num(i.t) + " on a " + i.object->type_name();
-}
 /// The counters of vl::counts() in words.
 inline std::string show(const intersection_counts& c) {
     return std::to_string(c.bounding_volume_tests) + " bounding-volume tests, " + std::to_string(c.primitive_tests) +
@@ -59,30 +37,8 @@ inline std::string show(const intersection_counts& c) {
 }
 
 // ---------------------------------------------------------------------------------------
-// Rays, random numbers, counting
+// Counting and geometry
 // ---------------------------------------------------------------------------------------
-
-/// The ray from `from` through `to`.
-inline ray ray_through(const point& from, const point& to) { return ray(from, to - from); }
-
-/// Random numbers for the sweeps, with a fixed seed so that every run tests the same rays.
-class random_numbers {
-public:
-    explicit random_numbers(unsigned seed = 3) : engine_(seed) {}
-    /// Uniform in [lo, hi).
-    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
-    /// A point uniform in the box [lo, hi]^3.
-    point in_box(double lo, double hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
-    /// A unit vector, uniform over the sphere of directions.
-    vector direction() {
-        const double z = uniform(-1, 1), phi = uniform(0, 2 * std::numbers::pi);
-        const double s = std::sqrt(1 - z * z);
-        return {s * std::cos(phi), s * std::sin(phi), z};
-    }
-
-private:
-    std::mt19937_64 engine_;
-};
 
 /// What `work` cost in this thread's counters (vl::counts()).
 template <class Work>
@@ -124,23 +80,11 @@ public:
 private:
     intersection find_intersection(const ray& r) const override {
         ++calls_;
-        using ld = long double;
-        const point o = r.origin().homogenized();
-        const vector d = r.direction();
-        const ld ox = ld(o.x) - center_.x, oy = ld(o.y) - center_.y, oz = ld(o.z) - center_.z;
-        const ld dd = ld(d.x) * d.x + ld(d.y) * d.y + ld(d.z) * d.z;
-        const ld b = ox * d.x + oy * d.y + oz * d.z;
-        const ld c = ox * ox + oy * oy + oz * oz - ld(radius_) * radius_;
-        const ld disc = b * b - dd * c;
-        if (disc < 0) return intersection::none();
-        const ld root = std::sqrt(disc);
-        // The near root without cancellation, the far one from the product of the roots.
-        const ld q = b > 0 ? -(b + root) : -(b - root);
-        ld t1 = q / dd, t2 = q != 0 ? c / q : t1;
-        if (t1 > t2) std::swap(t1, t2);
-        const ld limit = std::fabs(zero_t());
-        if (t1 > limit) return intersection::at(static_cast<double>(t1), this);
-        if (t2 > limit) return intersection::at(static_cast<double>(t2), this);
+        const stage02::testing::sphere_roots h = stage02::testing::roots_in_long_double(center_, radius_, r);
+        if (!h.meets) return intersection::none();
+        const long double limit = std::fabs(zero_t());
+        if (h.t1 > limit) return intersection::at(static_cast<double>(h.t1), this);
+        if (h.t2 > limit) return intersection::at(static_cast<double>(h.t2), this);
         return intersection::none();
     }
 
@@ -162,10 +106,7 @@ public:
 
 private:
     intersection find_intersection(const ray& r) const override {
-        const vector oc = center_ - r.origin().homogenized();
-        const double along = oc * r.direction();
-        const double miss_distance = (oc - along * r.direction()).length();
-        if (miss_distance < radius_ && (along > 0 || oc.length() < radius_)) return intersection::composite_only(this);
+        if (stage02::testing::passes_within(r, center_, radius_)) return intersection::composite_only(this);
         return intersection::none();
     }
     point center_;
@@ -244,36 +185,6 @@ inline std::vector<ray> rays_into(random_numbers& random, int n, double lo, doub
 // ---------------------------------------------------------------------------------------
 // Scene files
 // ---------------------------------------------------------------------------------------
-
-/// Reads one object (`BOX { ... }`) from `text` as if it were the file `test.ray_trace`,
-/// with every piece this build links.
-inline std::unique_ptr<rtab_component> read_object(const std::string& text) {
-    static const registry types = [] {
-        registry r;
-        register_all_pieces(r);
-        return r;
-    }();
-    scene_reader in(types);
-    in.open_text(text, "test.ray_trace");
-    return in.read_object();
-}
-
-/// The message of the vl::file_error that reading `text` throws, or "(no error)".
-inline std::string read_error(const std::string& text) {
-    try {
-        read_object(text);
-    } catch (const file_error& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
-
-/// What write() writes for `o`.
-inline std::string written(const rtab_component& o) {
-    std::ostringstream s;
-    o.write(s);
-    return s.str();
-}
 
 /// The message of the vl::usage_error that `work` throws, or "(no error)". Any other
 /// exception (a stub's "not yet implemented") goes on to fail the test.

@@ -21,7 +21,6 @@
 
 #include "vl/catch.hh"
 
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -29,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "all_pieces.hh"
+#include "../../02-sphere/tests/test_support.hh"
 #include "stage_04.hh"
 #include "vl/object_list.hh"
 #include "vl/primitive.hh"
@@ -41,24 +40,13 @@ namespace vl::stage04::testing {
 // Printing values in messages
 // ---------------------------------------------------------------------------------------
 
-/// `x` in the shortest form that reads back as exactly `x`.
-inline std::string num(double x) {
-    if (std::isnan(x)) return "NaN";
-    if (std::isinf(x)) return x > 0 ? "infinity" : "-infinity";
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, x);
-    return std::string(buf, r.ptr);
-}
-/// `(x, y, z)` of a point (homogenized) or a vector.
-inline std::string show(const point& p) {
-    const point h = p.w == 1 ? p : p.homogenized();
-    return "(" + num(h.x) + ", " + num(h.y) + ", " + num(h.z) + ")";
-}
-inline std::string show(const vector& v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
+// Numbers, points, vectors and rays in messages, at full precision (stage 02's helpers).
+using stage02::testing::num;
+using stage02::testing::ray_through;
+using stage02::testing::show;
+
 /// `(r, g, b)` of a colour (alpha is not shown: the tracer's colours all have alpha 0).
 inline std::string show(const color& c) { return "(" + num(c.r) + ", " + num(c.g) + ", " + num(c.b) + ")"; }
-/// "the ray from (..) towards (..)".
-inline std::string show(const ray& r) { return "the ray from " + show(r.origin()) + " towards " + show(r.direction()); }
 
 /// True when every channel (red, green, blue) of `got` is within `tolerance` of `want`.
 inline bool near(const color& got, const color& want, double tolerance) {
@@ -160,20 +148,13 @@ public:
 private:
     intersection find_intersection(const ray& r) const override {
         using ld = long double;
+        const stage02::testing::sphere_roots h = stage02::testing::roots_in_long_double(center_, radius_, r);
+        if (!h.meets) return intersection::none();
         const point o = r.origin().homogenized();
         const vector d = r.direction();
         const ld ox = ld(o.x) - center_.x, oy = ld(o.y) - center_.y, oz = ld(o.z) - center_.z;
-        const ld dd = ld(d.x) * d.x + ld(d.y) * d.y + ld(d.z) * d.z;
-        const ld b = ox * d.x + oy * d.y + oz * d.z;
-        const ld c = ox * ox + oy * oy + oz * oz - ld(radius_) * radius_;
-        const ld disc = b * b - dd * c;
-        if (disc < 0) return intersection::none();
-        const ld root = std::sqrt(disc);
-        const ld q = b > 0 ? -(b + root) : -(b - root);
-        ld t1 = q / dd, t2 = q != 0 ? c / q : t1;
-        if (t1 > t2) std::swap(t1, t2);
         const ld limit = std::fabs(zero_t());
-        for (const ld t : {t1, t2}) {
+        for (const ld t : {h.t1, h.t2}) {
             const ld side = (ox + t * d.x) * open_.x + (oy + t * d.y) * open_.y + (oz + t * d.z) * open_.z;
             if (t > limit && !(side > 0)) return intersection::at(static_cast<double>(t), this);
         }
@@ -249,10 +230,7 @@ private:
     intersection find_intersection(const ray& r) const override {
         const intersection i = nearest_child_hit(r);
         if (i.hit()) return i;
-        const vector oc = center_ - r.origin().homogenized();
-        const double along = oc * r.direction();
-        const double miss_distance = (oc - along * r.direction()).length();
-        if (miss_distance < radius_ && (along > 0 || oc.length() < radius_)) return intersection::composite_only(this);
+        if (stage02::testing::passes_within(r, center_, radius_)) return intersection::composite_only(this);
         return intersection::none();
     }
     point center_;
@@ -264,10 +242,7 @@ private:
 // ---------------------------------------------------------------------------------------
 
 /// Every piece this build links (the tracer `whitted` among them).
-inline const registry& pieces() {
-    static const registry types = all_pieces();
-    return types;
-}
+using stage02::testing::pieces;
 
 /// \brief A scene built in a test: no lights, no ambient, a black background (unlike a
 /// scene file's defaults), so each test switches on only what it looks at.
@@ -301,9 +276,6 @@ inline scene read_scene_text(const std::string& text) { return parse_scene(text,
 inline color trace_in(const scene& s, const ray& r, int depth = 0) {
     return pieces().make_tracer("whitted", s)->trace(r, depth);
 }
-
-/// The ray from `from` through `to`.
-inline ray ray_through(const point& from, const point& to) { return ray(from, to - from); }
 
 /// `looks` made dull: the same colour and kdr, but no mirror and no glass (ksr = kst = 0).
 /// The baseline a bounce test subtracts: what the surface sends back without bouncing.

@@ -22,44 +22,26 @@
 
 #include "vl/catch.hh"
 
-#include <charconv>
 #include <cmath>
+#include <exception>
+#include <initializer_list>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "01-tuples/tests/test_support.hh"
+#include "vl/error.hh"
 #include "vl/ray.hh"
 #include "vl/tuples_based.hh"
 
 namespace vl::grading {
 
-/// `x` in the shortest form that reads back as exactly `x` (so tolerances such as 1e-12
-/// are never printed as 0.0, and two different numbers never print alike).
-inline std::string num(double x) {
-    if (std::isnan(x)) return "NaN";
-    if (std::isinf(x)) return x > 0 ? "infinity" : "-infinity";
-    char buf[64];
-    const auto r = std::to_chars(buf, buf + sizeof buf, x);
-    return std::string(buf, r.ptr);
-}
-
-/// `(x, y, z)` of a point (homogenized) or a vector, each at full precision.
-inline std::string show(const point& p) {
-    const point h = p.w == 1 ? p : p.homogenized();
-    return "(" + num(h.x) + ", " + num(h.y) + ", " + num(h.z) + ")";
-}
-inline std::string show(const vector& v) { return "(" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ")"; }
-
-/// The ray in words: "the ray from (..) towards (..)".
-inline std::string show(const ray& r) { return "the ray from " + show(r.origin()) + " towards " + show(r.direction()); }
-
-/// A matrix row by row: "[a b c d; e f g h; ...]".
-inline std::string show(const matrix& m) {
-    std::string s = "[";
-    for (int r = 0; r < 4; ++r) {
-        for (int c = 0; c < 4; ++c) s += num(m(r, c)) + (c < 3 ? " " : "");
-        s += r < 3 ? "; " : "]";
-    }
-    return s;
-}
+// Numbers, tuples, rays and matrices print as in the public tests' messages: `x` in the
+// shortest form that reads back as exactly `x` (so tolerances such as 1e-12 are never
+// printed as 0.0, and two different numbers never print alike), "(x, y, z)", "the ray
+// from (..) towards (..)", "[a b c d; ...]".
+using test01::num;
+using test01::show;
 
 /// True when `got` is within `tolerance` of `want` (never for NaN).
 inline bool near(double got, double want, double tolerance) { return std::abs(got - want) <= tolerance; }
@@ -89,6 +71,86 @@ inline void chart_point(const std::string& series, double x, double y) {
     SUCCEED();
 }
 ///@}
+
+/// \brief Counts the inputs of a loop and keeps the first three failures in words;
+/// report() fails the test once, with those three and the count, so a sweep of a thousand
+/// rays that all go wrong reads as four lines, not a thousand.
+class tally {
+public:
+    explicit tally(std::string what) : what_(std::move(what)) {}
+
+    /// Records one input; when `ok` is false, `describe()` says what went wrong (called
+    /// only for the first three failures).
+    template <class Describe>
+    bool check(bool ok, Describe&& describe) {
+        ++tried_;
+        if (!ok) {
+            if (failed_ < 3) examples_.push_back(describe());
+            ++failed_;
+        }
+        return ok;
+    }
+    int failed() const { return failed_; }
+    int tried() const { return tried_; }
+    /// The first failure in words, or "".
+    std::string first_failure() const { return examples_.empty() ? std::string() : examples_.front(); }
+    /// Reports the count as one point of a sweep (the test passes whatever it is).
+    void report_sweep_point(double x) const { sweep_point(x, tried_, failed_, first_failure()); }
+
+    /// Passes when at most `allowed` inputs went wrong; otherwise one failure per example
+    /// kept (each read on its own), then the count.
+    void report(int allowed = 0) const {
+        if (failed_ <= allowed) {
+            SUCCEED();
+            return;
+        }
+        for (const std::string& e : examples_) FAIL_CHECK(e);
+        FAIL_CHECK(what_ << ": " << failed_ << " of " << tried_ << " went wrong"
+                         << (allowed > 0 ? " (at most " + std::to_string(allowed) + " may)" : std::string())
+                         << (failed_ > 3 ? " (the first 3 are above)" : " (above)"));
+    }
+    /// What the loop checks, as the report names it.
+    const std::string& what() const { return what_; }
+
+private:
+    std::string what_;
+    std::vector<std::string> examples_;
+    int failed_ = 0, tried_ = 0;
+};
+
+/// The message of the vl::file_error that `read()` throws, or what happened instead (in
+/// words, for the report: another exception, or no error at all).
+template <class Read>
+std::string file_error_of(Read&& read) {
+    try {
+        read();
+    } catch (const file_error& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        return std::string("(not a vl::file_error: ") + e.what() + ")";
+    }
+    return "(no error: the object was read)";
+}
+
+/// A scene-file block a reader must refuse, and the place its vl::file_error must name
+/// ("hidden.ray_trace:3:10").
+struct refused_block {
+    const char* text;
+    const char* where;
+};
+
+/// Checks, for each of `blocks`, that `read_error(text)` (the message of what reading
+/// the text threw) names the block's place.
+template <class ReadError>
+void check_refused(tally& t, ReadError&& read_error, std::initializer_list<refused_block> blocks) {
+    for (const refused_block& c : blocks) {
+        const std::string message = read_error(c.text);
+        t.check(message.find(c.where) != std::string::npos, [&] {
+            return std::string("reading \"") + c.text + "\" should fail with a vl::file_error at " + c.where + "; it gave: " +
+                   message;
+        });
+    }
+}
 
 }  // namespace vl::grading
 

@@ -219,12 +219,8 @@ inline mat4 exact_inverse(const matrix& md) {
 /// ‖x − exact‖∞ / ‖exact‖∞ in long double.
 inline ld relative_error(const matrix& x, const mat4& exact) { return norm(of(x) - exact) / norm(exact); }
 
-inline bool all_nan(const matrix& m) {
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c)
-            if (!std::isnan(m(r, c))) return false;
-    return true;
-}
+/// True when every element of `m` is NaN (the public tests' helper).
+using test01::all_nan;
 
 // --- seeded inputs --------------------------------------------------------------------------
 

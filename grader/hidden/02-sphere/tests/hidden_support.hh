@@ -1,7 +1,9 @@
 #pragma once
 // Helpers shared by stage 02's hidden tests (grader only): independent answer keys in
-// long double, a tally that reports the first few failing inputs of a sweep, and readers
-// for scene text.
+// long double, and the tests' own reader of what a write() wrote. What the public tests
+// have (ray_through(), random numbers, reading scene text) comes from their helpers
+// (assignments/02-sphere/tests/test_support.hh), what every hidden suite has (the tally,
+// long-double vectors, surfaces) from grader/hidden/common.
 
 #include <algorithm>
 #include <cmath>
@@ -17,18 +19,29 @@
 #include <utility>
 #include <vector>
 
+#include "02-sphere/tests/test_support.hh"
 #include "grading.hh"
+#include "long_double.hh"
 #include "stage_02.hh"
+#include "surfaces.hh"
 #include "vl/error.hh"
 #include "vl/registry.hh"
 #include "vl/scene_reader.hh"
 
 namespace vl::stage02::hidden {
 
+using grading::full_precision_surface;
 using grading::num;
+using grading::real;
+using grading::rvec;
 using grading::show;
-
-using real = long double;
+using grading::surface_of;
+using grading::surface_text;
+using grading::tally;
+using grading::to_r;
+using testing::ray_through;
+/// Seeded random numbers (the public tests' generator, with seeds of the hidden tests' own).
+using sampler = testing::random_numbers;
 
 // --- words -------------------------------------------------------------------------------
 
@@ -54,68 +67,7 @@ inline bool hit_near(const intersection& i, const rtab_component* object, double
     return clean_hit(i, object) && std::fabs(i.t - want) <= tolerance;
 }
 
-/// Counts the inputs of a sweep and keeps the first three failures in words; report()
-/// fails the test once, with the count and those three.
-class tally {
-public:
-    explicit tally(std::string what) : what_(std::move(what)) {}
-
-    /// Records one input; when `ok` is false, `describe()` says what went wrong.
-    template <class Describe>
-    bool check(bool ok, Describe&& describe) {
-        ++tried_;
-        if (!ok) {
-            if (failed_ < 3) examples_.push_back(describe());
-            ++failed_;
-        }
-        return ok;
-    }
-    int failed() const { return failed_; }
-    int tried() const { return tried_; }
-    /// The first failure in words, or "".
-    std::string first_failure() const { return examples_.empty() ? std::string() : examples_.front(); }
-    /// Reports the count as one point of a sweep (the test passes whatever it is).
-    void report_sweep_point(double x) const { vl::grading::sweep_point(x, tried_, failed_, first_failure()); }
-
-    /// Passes when nothing failed; otherwise one failure per example kept (each read on
-    /// its own), then the count.
-    void report() const {
-        if (failed_ == 0) {
-            SUCCEED();
-            return;
-        }
-        for (const std::string& e : examples_) FAIL_CHECK(e);
-        FAIL_CHECK(what_ << ": " << failed_ << " of " << tried_ << " went wrong"
-                         << (failed_ > 3 ? " (the first 3 are above)" : " (above)"));
-    }
-
-private:
-    std::string what_;
-    std::vector<std::string> examples_;
-    int failed_ = 0, tried_ = 0;
-};
-
 // --- random inputs -----------------------------------------------------------------------
-
-/// The ray from `from` through `to`.
-inline ray through(const point& from, const point& to) { return ray(from, to - from); }
-
-/// Seeded random numbers (a different seed from the public tests' helper).
-class sampler {
-public:
-    explicit sampler(unsigned seed) : engine_(seed) {}
-    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
-    point in_box(double s) { return {uniform(-s, s), uniform(-s, s), uniform(-s, s)}; }
-    vector jitter(double s) { return {uniform(-s, s), uniform(-s, s), uniform(-s, s)}; }
-    vector direction() {
-        const double z = uniform(-1, 1), phi = uniform(0, 2 * std::numbers::pi);
-        const double s = std::sqrt(1 - z * z);
-        return {s * std::cos(phi), s * std::sin(phi), z};
-    }
-
-private:
-    std::mt19937_64 engine_;
-};
 
 /// Two unit vectors spanning the plane perpendicular to `n`.
 inline void plane_axes(const vector& n, vector& u, vector& v) {
@@ -124,39 +76,7 @@ inline void plane_axes(const vector& n, vector& u, vector& v) {
     v = (n.unit() % u).unit();
 }
 
-/// A surface with every key set to a value that needs all 17 digits.
-inline surface full_precision_surface(double zero_t) {
-    surface s;
-    s.clr = color(0.1 + 1e-13, 1.0 / 3, 2.0 / 3 + 1e-12, 1.0 / 7);
-    s.kdr = 0.7 + 1e-14;
-    s.ksr = 1.0 / 3;
-    s.kdt = 1e-7 / 3;
-    s.kst = 0.2 + 3e-15;
-    s.n = 123456.789012345;
-    s.ior = 1.5 + 1e-13;
-    s.zero_t = zero_t;
-    return s;
-}
-
 // --- independent answer keys (long double) -----------------------------------------------
-
-struct rvec {
-    real x = 0, y = 0, z = 0;
-};
-inline rvec to_r(const point& p) {
-    const point h = p.homogenized();
-    return {h.x, h.y, h.z};
-}
-inline rvec to_r(const vector& v) { return {v.x, v.y, v.z}; }
-inline rvec operator-(const rvec& a, const rvec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline rvec operator+(const rvec& a, const rvec& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline rvec operator*(real s, const rvec& a) { return {s * a.x, s * a.y, s * a.z}; }
-inline real dot(const rvec& a, const rvec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline rvec cross(const rvec& a, const rvec& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline real len(const rvec& a) { return std::sqrt(dot(a, a)); }
-inline rvec unit(const rvec& a) { return (1 / len(a)) * a; }
 
 /// Where the line of `r` meets the sphere: both roots t0 <= t1 (stable formulas), or none.
 struct sphere_roots {
@@ -270,38 +190,73 @@ inline double unit_gap(const vector& got, const vector& want) {
     return static_cast<double>(std::max({std::fabs(got.x - w.x), std::fabs(got.y - w.y), std::fabs(got.z - w.z)}));
 }
 
+/// \brief zero_t, positive or negative, hides a hit up to its absolute value: each of `rays`
+/// meets `o` (`described`, as the messages say) at t = 0.3, so with each of a list of
+/// zero_t it must hit there (± 1e-12) when |zero_t| < 0.3 and miss otherwise.
+inline void check_zero_t_hides_hit_at_0_3(tally& t, primitive& o, const std::string& described,
+                                          std::initializer_list<ray> rays) {
+    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
+        o.set_surface(testing::with_zero_t(zero_t));
+        for (const ray& r : rays) {
+            const bool want = 0.3 > std::fabs(zero_t);
+            const intersection i = o.intersect(r);
+            t.check(want ? hit_near(i, &o, 0.3, 1e-12) : clean_miss(i), [&] {
+                return show(r) + " meets " + described + " at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
+                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, &o);
+            });
+        }
+    }
+}
+
+/// Checks that the box of `o` (`described` in words) runs exactly from `want_lo` to `want_hi`.
+inline void check_exact_box(tally& t, const rtab_component& o, const std::string& described, const point& want_lo,
+                            const point& want_hi) {
+    const point lo = o.min_point(), hi = o.max_point();
+    t.check(lo == want_lo && hi == want_hi, [&] {
+        return "the box of " + described + " should run from " + show(want_lo) + " to " + show(want_hi) +
+               "; yours runs from " + show(lo) + " to " + show(hi);
+    });
+}
+
+/// Checks that the box of `got` (`who`) is the box of `want` within `slack`.
+inline void check_same_box(tally& t, const rtab_component& got, const rtab_component& want, const std::string& who,
+                           double slack) {
+    const point lo = got.min_point(), hi = got.max_point(), wlo = want.min_point(), whi = want.max_point();
+    t.check((lo - wlo).length() <= slack && (hi - whi).length() <= slack, [&] {
+        return who + "'s box runs from " + show(lo) + " to " + show(hi) + "; it should run from " + show(wlo) + " to " +
+               show(whi) + " (± " + num(slack) + ")";
+    });
+}
+
 // --- scene text --------------------------------------------------------------------------
 
-/// Reads one object from `text` with stage 02's types and the framework's.
-inline std::unique_ptr<rtab_component> read_one(const std::string& text) {
+/// The types the tests read: stage 02's and the framework's.
+inline const registry& test_types() {
     static const registry types = [] {
         registry r;
         register_framework(r);
         register_stage_02(r);
         return r;
     }();
-    scene_reader in(types);
-    in.open_text(text, "hidden.ray_trace");
-    return in.read_object();
+    return types;
+}
+
+/// Reads one object from `text` (as the file "hidden.ray_trace").
+inline std::unique_ptr<rtab_component> read_one(const std::string& text) {
+    return testing::read_object(text, "hidden.ray_trace", test_types());
 }
 
 /// What write() writes.
-inline std::string text_of(const rtab_component& o) {
-    std::ostringstream s;
-    o.write(s);
-    return s.str();
-}
+inline std::string text_of(const rtab_component& o) { return testing::written(o); }
 
 /// The message of the vl::file_error that reading `text` throws, or what happened instead.
 inline std::string read_error(const std::string& text) {
-    try {
-        read_one(text);
-    } catch (const file_error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        return std::string("(not a vl::file_error: ") + e.what() + ")";
-    }
-    return "(no error: the object was read)";
+    return grading::file_error_of([&] { read_one(text); });
+}
+
+/// Checks that each of `blocks` is refused with a vl::file_error at its place.
+inline void check_refused(tally& t, std::initializer_list<grading::refused_block> blocks) {
+    grading::check_refused(t, [](const std::string& text) { return read_error(text); }, blocks);
 }
 
 /// What a write() wrote, read by the tests' own reader (not yours): the type, each
@@ -404,33 +359,50 @@ inline written_object parse_written(const std::string& text) {
 
 /// Compares each surface key of `got` with `want` to 4 ulps; appends a line per difference.
 inline void compare_surface(const surface& got, const surface& want, const std::string& who, tally& t) {
-    const std::pair<const char*, std::pair<double, double>> keys[] = {
-        {"color red", {got.clr.r, want.clr.r}},   {"color green", {got.clr.g, want.clr.g}},
-        {"color blue", {got.clr.b, want.clr.b}},  {"color alpha", {got.clr.a, want.clr.a}},
-        {"kdr", {got.kdr, want.kdr}},             {"ksr", {got.ksr, want.ksr}},
-        {"kdt", {got.kdt, want.kdt}},             {"kst", {got.kst, want.kst}},
-        {"n", {got.n, want.n}},                   {"ior", {got.ior, want.ior}},
-        {"zero_t", {got.zero_t, want.zero_t}},
-    };
-    for (const auto& [name, values] : keys)
+    for (const auto& [name, values] : grading::surface_keys(got, want))
         t.check(within_ulps(values.first, values.second, 4), [&, name = name, values = values] {
             return who + " has " + name + " " + num(values.first) + " where the object had " + num(values.second) +
                    " (allowed: 4 units in the last place)";
         });
 }
 
-/// The surface getters of an object, as a vl::surface.
-inline surface surface_of(const rtab_component& o) {
-    surface s;
-    s.clr = o.clr();
-    s.kdr = o.kdr();
-    s.ksr = o.ksr();
-    s.kdt = o.kdt();
-    s.kst = o.kst();
-    s.n = o.n();
-    s.ior = o.ior();
-    s.zero_t = o.zero_t();
-    return s;
+/// Reads `text`, which describes `want` (a `type`) with the surface `surf`: what your read()
+/// makes of it must have that surface and be the same object, as `same_object(got, what)`
+/// checks.
+template <class Object, class SameObject>
+void check_read_as(tally& t, const std::string& text, const std::string& type, Object& want, const surface& surf,
+                   SameObject&& same_object) {
+    const auto got = read_one(text);
+    want.set_surface(surf);
+    const std::string what = "the " + type + " read from " + text;
+    compare_surface(surface_of(*got), surf, what, t);
+    same_object(*got, what);
+}
+
+/// \brief The round trip of a scene-file test: write() of `original` (an object of type
+/// `type`, `described` in words) must be one `type` { ... } as the tests' own reader reads
+/// it, with the keys `same_keys(w, who)` checks and the surface of `original` (to 4 ulps);
+/// and what your read() makes of that text must be the same object, as
+/// `same_object(back, what)` checks, with the same surface.
+template <class Object, class SameKeys, class SameObject>
+void check_write_reads_back(tally& t, const Object& original, const std::string& type, const std::string& described,
+                            SameKeys&& same_keys, SameObject&& same_object) {
+    const std::string text = text_of(original);
+    const std::string who = "write() of " + described + " gave \"" + text + "\", which";
+    // What the text says, read by the tests' own reader.
+    const written_object w = parse_written(text);
+    t.check(w.problem.empty() && w.type == type && w.one_object, [&] {
+        return who + " should be one " + type + " { ... }; " + (w.problem.empty() ? "it is not" : w.problem);
+    });
+    if (w.problem.empty()) {
+        same_keys(w, who);
+        compare_surface(w.surf, original.surf(), who, t);
+    }
+    // What your read() makes of it: the same object.
+    const auto back = read_one(text);
+    const std::string what = "the " + type + " read back from \"" + text + "\"";
+    compare_surface(surface_of(*back), original.surf(), what, t);
+    same_object(*back, what);
 }
 
 /// Checks that `make` throws vl::usage_error; says what happened otherwise.

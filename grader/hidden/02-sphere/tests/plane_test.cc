@@ -108,9 +108,9 @@ TEST_CASE("plane: rays from either side meet a tilted plane where the plane equa
             vector u, v;
             plane_axes(n, u, v);
             const point target = p.on + random.uniform(-50, 50) * u + random.uniform(-50, 50) * v;
-            const point from = target + random.uniform(0.01, 30) * (k % 2 == 0 ? n : -n) + random.jitter(20);
+            const point from = target + random.uniform(0.01, 30) * (k % 2 == 0 ? n : -n) + random.offset(20);
             if (std::fabs(((target - from).unit()) * n) < 0.05) continue;
-            check_ray(t, *pl, p, through(from, target));
+            check_ray(t, *pl, p, ray_through(from, target));
         }
     }
     t.report();
@@ -120,11 +120,11 @@ TEST_CASE("plane: a plane behind the ray, or one the ray moves away from, is not
     tally t("rays moving away from a plane");
     sampler random(312);
     for (int k = 0; k < 1000; ++k) {
-        const flat p{random.in_box(5), random.direction() * random.uniform(0.1, 10)};
+        const flat p{random.in_cube(5), random.direction() * random.uniform(0.1, 10)};
         const auto pl = make_plane(p.on, p.normal);
         const vector n = p.normal.unit();
         const double side = k % 2 == 0 ? 1 : -1;
-        const point origin = p.on + side * random.uniform(0.01, 50) * n + random.jitter(30);
+        const point origin = p.on + side * random.uniform(0.01, 50) * n + random.offset(30);
         const double height = (origin - p.on) * n;
         vector d = random.direction();
         if ((d * n) * height < 0) d = -d;
@@ -202,20 +202,9 @@ TEST_CASE("plane: zero_t, positive or negative, hides a hit up to its absolute v
     tally t("a plane hit at t = 0.3 with different zero_t");
     const flat p{point(0, -0.3, 0), vector(0, 1, 0)};
     const auto pl = make_plane(p.on, p.normal);
-    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
-        vl::surface s;
-        s.zero_t = zero_t;
-        pl->set_surface(s);
-        for (const double direction : {-1.0, 1.0}) {
-            const ray r(point(0, -0.3 - direction * 0.3, 0), vector(0, direction, 0));
-            const bool want = 0.3 > std::fabs(zero_t);
-            const intersection i = pl->intersect(r);
-            t.check(want ? hit_near(i, pl.get(), 0.3, 1e-12) : clean_miss(i), [&] {
-                return show(r) + " meets " + describe(p) + " at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
-                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, pl.get());
-            });
-        }
-    }
+    // From above (down along -y) and from below (up along +y).
+    check_zero_t_hides_hit_at_0_3(t, *pl, describe(p),
+                                  {ray(point(0, 0, 0), vector(0, -1, 0)), ray(point(0, -0.6, 0), vector(0, 1, 0))});
     t.report();
 }
 
@@ -241,7 +230,7 @@ TEST_CASE("plane: a plane a million units away is met with full relative precisi
     plane_axes(n, u, v);
     for (int k = 0; k < 200; ++k) {
         const point target = p.on + random.uniform(-1e4, 1e4) * u + random.uniform(-1e4, 1e4) * v;
-        check_ray(t, *pl, p, through(point(0, 0, 0), target));
+        check_ray(t, *pl, p, ray_through(point(0, 0, 0), target));
     }
     t.report();
 }
@@ -260,9 +249,9 @@ TEST_CASE("plane: its normal is the given one made unit, everywhere and also aft
         for (int k = 0; k < 20; ++k) {
             if (k == 10) {  // rays from behind must not change it
                 const vector n = p.normal.unit();
-                for (int j = 0; j < 5; ++j) pl->intersect(ray(p.on - 3 * n + random.jitter(1), n));
+                for (int j = 0; j < 5; ++j) pl->intersect(ray(p.on - 3 * n + random.offset(1), n));
             }
-            const point q = random.in_box(100);
+            const point q = random.in_cube(100);
             const vector got = pl->normal(q);
             const double gap = unit_gap(got, p.normal);
             t.check(gap <= 4e-16 * 4, [&] {
@@ -304,33 +293,18 @@ TEST_CASE("plane: a PLANE in a scene file is the plane its point, normal and sur
     const flat p{point(0.1 + 1e-13, -1.0 / 3, 7.25), vector(1.0 / 3, -2, 0.5 + 1e-12)};
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     const std::string text = "PLANE { normal " + num(p.normal.x) + " " + num(p.normal.y) + " " + num(p.normal.z) + " point (" +
-                             num(p.on.x) + ", " + num(p.on.y) + ", " + num(p.on.z) + ") color " + num(surf.clr.r) + " " +
-                             num(surf.clr.g) + " " + num(surf.clr.b) + " " + num(surf.clr.a) + " kdr " + num(surf.kdr) +
-                             " ksr " + num(surf.ksr) + " kdt " + num(surf.kdt) + " kst " + num(surf.kst) + " n " +
-                             num(surf.n) + " ior " + num(surf.ior) + " zero_t " + num(surf.zero_t) + " }";
-    const auto got = read_one(text);
+                             num(p.on.x) + ", " + num(p.on.y) + ", " + num(p.on.z) + ")" + surface_text(surf) + " }";
     const auto want = make_plane(p.on, p.normal);
-    want->set_surface(surf);
-    compare_surface(surface_of(*got), surf, "the PLANE read from " + text, t);
-    check_same_plane(t, *got, *want, p, "the PLANE read from " + text);
+    check_read_as(t, text, "PLANE", *want, surf,
+                  [&](const rtab_component& got, const std::string& what) { check_same_plane(t, got, *want, p, what); });
     t.report();
 }
 
 TEST_CASE("plane: a bad PLANE in a scene file is refused at the value at fault, a good one is read", "[02][plane][scene_io][detail]") {
     tally t("PLANE blocks in scene files");
-    const struct {
-        const char* text;
-        const char* where;
-    } bad[] = {{"PLANE { normal 0 0 0 }", "hidden.ray_trace:1:16"},
-               {"PLANE {\n  point 1 2 3\n  normal (0, 0, 0)\n}", "hidden.ray_trace:3:10"},
-               {"PLANE { point (1, 2, 3, 0) }", "hidden.ray_trace:1:15"}};
-    for (const auto& c : bad) {
-        const std::string message = read_error(c.text);
-        t.check(message.find(c.where) != std::string::npos, [&] {
-            return std::string("reading \"") + c.text + "\" should fail with a vl::file_error at " + c.where + "; it gave: " +
-                   message;
-        });
-    }
+    check_refused(t, {{"PLANE { normal 0 0 0 }", "hidden.ray_trace:1:16"},
+                      {"PLANE {\n  point 1 2 3\n  normal (0, 0, 0)\n}", "hidden.ray_trace:3:10"},
+                      {"PLANE { point (1, 2, 3, 0) }", "hidden.ray_trace:1:15"}});
     const auto good = read_one("PLANE { point 0 -1 0 normal 0 0 2 }");
     const auto want = make_plane(point(0, -1, 0), vector(0, 0, 2));
     check_same_plane(t, *good, *want, {point(0, -1, 0), vector(0, 0, 2)}, "PLANE { point 0 -1 0 normal 0 0 2 }");
@@ -352,35 +326,28 @@ TEST_CASE("plane: write() keeps every digit of the plane and of each surface key
                           flat{point(123456.789012345, 1e-7, -1.0 / 7), vector(-2.0 / 3, 123.456789012345, 1.0 / 7)}}) {
         const auto original = make_plane(p.on, p.normal);
         original->set_surface(full_precision_surface(-1e-9 / 3));
-        const std::string text = text_of(*original);
-        const std::string who = "write() of " + describe(p) + " gave \"" + text + "\", which";
-        const written_object w = parse_written(text);
-        t.check(w.problem.empty() && w.type == "PLANE" && w.one_object, [&] {
-            return who + " should be one PLANE { ... }; " + (w.problem.empty() ? "it is not" : w.problem);
-        });
-        if (w.problem.empty()) {
-            // The same plane: the normal's direction to a few ulps, the point on it.
-            const std::vector<double> q = w.keys.at("point"), m = w.keys.at("normal");
-            const vector written_normal(m[0], m[1], m[2]);
-            const double gap = unit_gap(written_normal.unit(), p.normal);
-            t.check(gap <= 4 * std::numeric_limits<double>::epsilon(), [&] {
-                return who + " has a normal of direction " + show(written_normal.unit()) + "; it should be " +
-                       show(p.normal.unit()) + " (± 4 ulps)";
-            });
-            const point written_point(q[0], q[1], q[2]);
-            const double size = std::fabs(p.on.x) + std::fabs(p.on.y) + std::fabs(p.on.z) + std::fabs(q[0]) +
-                                std::fabs(q[1]) + std::fabs(q[2]);
-            const double off = std::fabs(static_cast<double>(dot(to_r(written_point) - to_r(p.on), unit(to_r(p.normal)))));
-            const double allowed = 8 * std::numeric_limits<double>::epsilon() * size;
-            t.check(off <= allowed, [&] {
-                return who + " has the point " + show(written_point) + ", " + num(off) + " away from the plane (allowed: " +
-                       num(allowed) + ")";
-            });
-            compare_surface(w.surf, original->surf(), who, t);
-        }
-        const auto back = read_one(text);
-        compare_surface(surface_of(*back), original->surf(), "the PLANE read back from \"" + text + "\"", t);
-        check_same_plane(t, *back, *original, p, "the PLANE read back from \"" + text + "\"");
+        check_write_reads_back(
+            t, *original, "PLANE", describe(p),
+            [&](const written_object& w, const std::string& who) {
+                // The same plane: the normal's direction to a few ulps, the point on it.
+                const std::vector<double> q = w.keys.at("point"), m = w.keys.at("normal");
+                const vector written_normal(m[0], m[1], m[2]);
+                const double gap = unit_gap(written_normal.unit(), p.normal);
+                t.check(gap <= 4 * std::numeric_limits<double>::epsilon(), [&] {
+                    return who + " has a normal of direction " + show(written_normal.unit()) + "; it should be " +
+                           show(p.normal.unit()) + " (± 4 ulps)";
+                });
+                const point written_point(q[0], q[1], q[2]);
+                const double size = std::fabs(p.on.x) + std::fabs(p.on.y) + std::fabs(p.on.z) + std::fabs(q[0]) +
+                                    std::fabs(q[1]) + std::fabs(q[2]);
+                const double off = std::fabs(static_cast<double>(dot(to_r(written_point) - to_r(p.on), unit(to_r(p.normal)))));
+                const double allowed = 8 * std::numeric_limits<double>::epsilon() * size;
+                t.check(off <= allowed, [&] {
+                    return who + " has the point " + show(written_point) + ", " + num(off) + " away from the plane (allowed: " +
+                           num(allowed) + ")";
+                });
+            },
+            [&](const rtab_component& back, const std::string& what) { check_same_plane(t, back, *original, p, what); });
     }
     t.report();
 }

@@ -57,7 +57,7 @@ shape random_convex(sampler& random) {
         angles.back() = angles.front() + 2 * std::numbers::pi - 0.3;
     vector u, v;
     plane_axes(random.direction(), u, v);
-    const point centre = random.in_box(10);
+    const point centre = random.in_cube(10);
     const double a = random.uniform(0.5, 3), b = random.uniform(0.5, 3);
     shape out;
     for (const double angle : angles) out.push_back(centre + a * std::cos(angle) * u + b * std::sin(angle) * v);
@@ -128,11 +128,7 @@ void check_same_polygon(tally& t, const rtab_component& got, const primitive& wa
     double coordinates = 0;
     for (const point& p : v) coordinates = std::max({coordinates, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
     const double slack = 8 * std::numeric_limits<double>::epsilon() * coordinates;
-    const point lo = got.min_point(), hi = got.max_point(), wlo = want.min_point(), whi = want.max_point();
-    t.check((lo - wlo).length() <= slack && (hi - whi).length() <= slack, [&] {
-        return who + "'s box runs from " + show(lo) + " to " + show(hi) + "; it should run from " + show(wlo) + " to " +
-               show(whi) + " (± " + num(slack) + ")";
-    });
+    check_same_box(t, got, want, who, slack);
     const point middle = centre_of(v);
     const vector gn = got.normal(middle), wn = want.normal(middle);
     t.check((gn - wn).length() <= 1e-12 + 100 * slack / size_of(v), [&] {
@@ -143,8 +139,8 @@ void check_same_polygon(tally& t, const rtab_component& got, const primitive& wa
     const vector n = normal_of(v);
     for (int j = 0; j < 40; ++j) {
         const point target = middle + 0.8 * random.uniform(0, 1) * (v[static_cast<std::size_t>(j) % v.size()] - middle) +
-                             (j % 3 == 0 ? 0.5 * size_of(v) * random.jitter(1) : vector());
-        const ray r = through(target + size_of(v) * random.uniform(0.5, 5) * (j % 2 == 0 ? n : -n) + random.jitter(size_of(v)),
+                             (j % 3 == 0 ? 0.5 * size_of(v) * random.offset(1) : vector());
+        const ray r = ray_through(target + size_of(v) * random.uniform(0.5, 5) * (j % 2 == 0 ? n : -n) + random.offset(size_of(v)),
                               target);
         const polygon_answer exact = polygon_oracle(v, r);
         if (std::fabs(static_cast<double>(exact.inside)) < 1e-6) continue;
@@ -162,9 +158,7 @@ void check_same_polygon(tally& t, const rtab_component& got, const primitive& wa
 std::string polygon_text(const shape& v, const vl::surface& s, bool with_surface) {
     std::string text = "POLYGON {";
     if (with_surface)
-        text += " color " + num(s.clr.r) + " " + num(s.clr.g) + " " + num(s.clr.b) + " " + num(s.clr.a) + " kdr " + num(s.kdr) +
-                " ksr " + num(s.ksr) + " kdt " + num(s.kdt) + " kst " + num(s.kst) + " n " + num(s.n) + " ior " + num(s.ior) +
-                " zero_t " + num(s.zero_t);
+        text += surface_text(s);
     text += " vertices";
     for (const point& p : v) text += " (" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + ")";
     return text + " }";
@@ -177,9 +171,9 @@ void sweep(tally& t, const shape& v, sampler& random, int rays) {
     const point c = centre_of(v);
     for (int j = 0; j < rays; ++j) {
         const point corner = v[static_cast<std::size_t>(j) % v.size()];
-        const point target = c + random.uniform(0, 1.3) * (corner - c) + 0.2 * size_of(v) * random.jitter(1);
-        const point from = target + size_of(v) * random.uniform(0.1, 10) * (j % 2 == 0 ? n : -n) + random.jitter(size_of(v));
-        const ray r = through(from, target);
+        const point target = c + random.uniform(0, 1.3) * (corner - c) + 0.2 * size_of(v) * random.offset(1);
+        const point from = target + size_of(v) * random.uniform(0.1, 10) * (j % 2 == 0 ? n : -n) + random.offset(size_of(v));
+        const ray r = ray_through(from, target);
         if (std::fabs(r.direction() * n) < 0.02) continue;
         check_ray(t, *poly, v, r);
     }
@@ -210,13 +204,13 @@ TEST_CASE("polygon: a tilted regular hexagon is hit just inside each edge and mi
             for (const double f : {0.05, 0.5, 0.95}) {
                 const point on_edge = a + f * (b - a);
                 const vector outward = (on_edge - centre).unit();
-                check_ray(t, *p, hexagon, through(eye, on_edge - 1e-5 * outward), 1e-7);
-                check_ray(t, *p, hexagon, through(eye, on_edge + 1e-5 * outward), 1e-7);
+                check_ray(t, *p, hexagon, ray_through(eye, on_edge - 1e-5 * outward), 1e-7);
+                check_ray(t, *p, hexagon, ray_through(eye, on_edge + 1e-5 * outward), 1e-7);
             }
             // Beyond each corner, along the line from the centre, and in the corner of the
             // hexagon's box (inside the box, outside the hexagon).
-            check_ray(t, *p, hexagon, through(eye, centre + 1.01 * (a - centre)));
-            check_ray(t, *p, hexagon, through(eye, a + 0.45 * (b - a) + 0.15 * (a + 0.5 * (b - a) - centre)));
+            check_ray(t, *p, hexagon, ray_through(eye, centre + 1.01 * (a - centre)));
+            check_ray(t, *p, hexagon, ray_through(eye, a + 0.45 * (b - a) + 0.15 * (a + 0.5 * (b - a) - centre)));
         }
         // Away from it.
         check_ray(t, *p, hexagon, ray(eye, eye - centre));
@@ -236,8 +230,8 @@ TEST_CASE("polygon: a polygon is hit from behind as well as from the front", "[0
             const point target = c + random.uniform(0, 0.5) * (v[static_cast<std::size_t>(j) % v.size()] - c);
             vector d = random.direction();
             if (std::fabs(d * n) < 0.1) d = d + 0.5 * n;
-            check_ray(t, *poly, v, through(target + random.uniform(0.1, 10) * d, target));
-            check_ray(t, *poly, v, through(target - random.uniform(0.1, 10) * d, target));
+            check_ray(t, *poly, v, ray_through(target + random.uniform(0.1, 10) * d, target));
+            check_ray(t, *poly, v, ray_through(target - random.uniform(0.1, 10) * d, target));
         }
     }
     t.report();
@@ -250,7 +244,7 @@ TEST_CASE("polygon: a three-vertex polygon is hit inside and missed outside like
     sampler random(513);
     for (int k = 0; k < 2000; ++k) {
         const point target = v[0] + random.uniform(-0.3, 1.3) * (v[1] - v[0]) + random.uniform(-0.3, 1.3) * (v[2] - v[0]);
-        check_ray(t, *poly, v, through(random.in_box(10), target));
+        check_ray(t, *poly, v, ray_through(random.in_cube(10), target));
     }
     t.report();
 }
@@ -310,19 +304,7 @@ TEST_CASE("polygon: zero_t, positive or negative, hides a hit up to its absolute
     tally t("a polygon hit at t = 0.3 with different zero_t");
     const shape v = {point(0, 0, -0.3), point(1, 0, -0.3), point(1, 1, -0.3), point(0, 1, -0.3)};
     const auto p = make_polygon(v);
-    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
-        vl::surface s;
-        s.zero_t = zero_t;
-        p->set_surface(s);
-        for (const ray& r : {ray(point(0.5, 0.25, 0), vector(0, 0, -1)), ray(point(0.5, 0.25, -0.6), vector(0, 0, 1))}) {
-            const bool want = 0.3 > std::fabs(zero_t);
-            const intersection i = p->intersect(r);
-            t.check(want ? hit_near(i, p.get(), 0.3, 1e-12) : clean_miss(i), [&] {
-                return show(r) + " meets the unit square at z = -0.3 at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
-                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, p.get());
-            });
-        }
-    }
+    check_zero_t_hides_hit_at_0_3(t, *p, "the unit square at z = -0.3", {ray(point(0.5, 0.25, 0), vector(0, 0, -1)), ray(point(0.5, 0.25, -0.6), vector(0, 0, 1))});
     t.report();
 }
 
@@ -338,11 +320,11 @@ TEST_CASE("polygon: a small octagon a million units away keeps its corners and e
         const point a = octagon[e], b = octagon[(e + 1) % octagon.size()];
         const point mid = a + 0.5 * (b - a);
         const vector outward = (mid - centre).unit();
-        check_ray(t, *p, octagon, through(eye, mid - 1e-4 * outward), 1e-5);
-        check_ray(t, *p, octagon, through(eye, mid + 1e-4 * outward), 1e-5);
-        check_ray(t, *p, octagon, through(eye, a + 0.4 * (mid - a) + 0.04 * outward), 1e-5);  // inside its box
+        check_ray(t, *p, octagon, ray_through(eye, mid - 1e-4 * outward), 1e-5);
+        check_ray(t, *p, octagon, ray_through(eye, mid + 1e-4 * outward), 1e-5);
+        check_ray(t, *p, octagon, ray_through(eye, a + 0.4 * (mid - a) + 0.04 * outward), 1e-5);  // inside its box
     }
-    check_ray(t, *p, octagon, through(eye, centre));
+    check_ray(t, *p, octagon, ray_through(eye, centre));
     t.report();
 }
 
@@ -372,7 +354,7 @@ TEST_CASE("polygon: rays from inside a box of six rectangular faces never escape
         }
         const point from = middle + random.uniform(-0.4, 0.4) * x + random.uniform(-0.4, 0.4) * y +
                            random.uniform(-0.4, 0.4) * z;
-        const ray r = through(from, target);
+        const ray r = ray_through(from, target);
         t.check(any_hit(faces, r), [&] { return show(r) + " aimed at " + show(target) + " escapes through the box"; });
     }
     t.report();
@@ -395,7 +377,7 @@ TEST_CASE("polygon: rays through the shared edges and the hub of a ring of quadr
         const point target = k % 5 == 0 ? hub : hub + random.uniform(0.01, 0.99) * (rim[spoke] - hub);
         vector d = random.direction();
         if (std::fabs(d * n) < 0.2) d = d + 0.5 * (d * n < 0 ? -n : n);
-        const ray r = through(target + random.uniform(1, 30) * d.unit(), target);
+        const ray r = ray_through(target + random.uniform(1, 30) * d.unit(), target);
         t.check(any_hit(ring, r), [&] { return show(r) + " aimed at " + show(target) + " slips through the ring"; });
     }
     t.report();
@@ -461,7 +443,7 @@ TEST_CASE("polygon: the normal follows the winding of a twelve-sided polygon, fr
         const auto p = make_polygon(s);
         const vector want = normal_of(s);
         // Rays from behind must not change it.
-        for (int j = 0; j < 3; ++j) p->intersect(through(centre_of(s) - 3 * want, centre_of(s)));
+        for (int j = 0; j < 3; ++j) p->intersect(ray_through(centre_of(s) - 3 * want, centre_of(s)));
         const vector got = p->normal(on);
         t.check(unit_gap(got, want) <= 1e-12, [&] {
             return "the normal of " + describe(s) + " should be " + show(want) + " ± 1e-12 (unit, counter-clockwise side); yours is " +
@@ -483,12 +465,7 @@ TEST_CASE("polygon: its box is exactly the smallest one around the vertices", "[
         {{point(0, 0, 2), point(1, 0, 2), point(1, 1, 2), point(0, 1, 2)}, point(0, 0, 2), point(1, 1, 2)},
     };
     for (const auto& c : cases) {
-        const auto p = make_polygon(c.v);
-        const point lo = p->min_point(), hi = p->max_point();
-        t.check(lo == c.lo && hi == c.hi, [&] {
-            return "the box of " + describe(c.v) + " should run from " + show(c.lo) + " to " + show(c.hi) + "; yours runs from " +
-                   show(lo) + " to " + show(hi);
-        });
+        check_exact_box(t, *make_polygon(c.v), describe(c.v), c.lo, c.hi);
     }
     t.report();
 }
@@ -525,7 +502,7 @@ TEST_CASE("polygon: make_polygon refuses too few, repeated, non-finite, collinea
     try {
         const auto p = make_polygon(rounded);
         // The vertices are off one plane by up to ~1e-7: so may the hit be.
-        check_ray(t, *p, rounded, through(point(0.5, -0.25, 1) + 3 * n, point(0.5, -0.25, 1)), 1e-6, 1e-6);
+        check_ray(t, *p, rounded, ray_through(point(0.5, -0.25, 1) + 3 * n, point(0.5, -0.25, 1)), 1e-6, 1e-6);
     } catch (const std::exception& e) {
         t.check(false, [&] { return "make_polygon(" + describe(rounded) + ") should be accepted; it threw: " + e.what(); });
     }
@@ -543,32 +520,20 @@ TEST_CASE("polygon: a POLYGON in a scene file is the polygon its vertices and su
     const shape s = regular(5, point(0.1 + 1e-13, -1.0 / 3, 7.25), 2.0 / 3, u, v, 0.1);
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     const std::string text = polygon_text(s, surf, true);
-    const auto got = read_one(text);
     const auto want = make_polygon(s);
-    want->set_surface(surf);
-    compare_surface(surface_of(*got), surf, "the POLYGON read from " + text, t);
-    check_same_polygon(t, *got, *want, s, "the POLYGON read from " + text);
+    check_read_as(t, text, "POLYGON", *want, surf,
+                  [&](const rtab_component& got, const std::string& what) { check_same_polygon(t, got, *want, s, what); });
     t.report();
 }
 
 TEST_CASE("polygon: a bad POLYGON in a scene file is refused at the vertex at fault, a good one is read", "[02][polygon][scene_io][detail]") {
     tally t("POLYGON blocks in scene files");
-    const struct {
-        const char* text;
-        const char* where;
-    } bad[] = {
+    check_refused(t, {
         {"POLYGON {\n  vertices (0, 0, 0) (2, 0, 0) (2, 2, 0) (0, 2, 0)\n  (-0.5, 1, 0.3)\n}", "hidden.ray_trace:3:3"},
         {"POLYGON {\n  vertices (0, 0, 0) (2, 0, 0)\n  (2, 0, 0) (0, 2, 0)\n}", "hidden.ray_trace:3:3"},
         {"POLYGON {\n  vertices (0, 0, 0) (2, 0, 0)\n  (2, 2, 0, 0) (0, 2, 0)\n}", "hidden.ray_trace:3:"},
         {"POLYGON { vertices (0, 0, 0) (1, 0, 0) }", "hidden.ray_trace:1:"},
-    };
-    for (const auto& c : bad) {
-        const std::string message = read_error(c.text);
-        t.check(message.find(c.where) != std::string::npos, [&] {
-            return std::string("reading \"") + c.text + "\" should fail with a vl::file_error at " + c.where + "; it gave: " +
-                   message;
-        });
-    }
+    });
     const shape s = {point(0, 0, -2), point(2, 0, -2), point(2.5, 1, -2), point(0, 2, -2)};
     const auto good = read_one(polygon_text(s, {}, false));
     const auto want = make_polygon(s);
@@ -595,28 +560,21 @@ TEST_CASE("polygon: write() keeps every digit of the vertices, in order, and of 
                            regular(6, point(123456.789012345, 1e-7, -1.0 / 7), 0.25, u, v, 0.7)}) {
         const auto original = make_polygon(s);
         original->set_surface(full_precision_surface(-1e-9 / 3));
-        const std::string text = text_of(*original);
-        const std::string who = "write() of " + describe(s) + " gave \"" + text + "\", which";
-        const written_object w = parse_written(text);
-        t.check(w.problem.empty() && w.type == "POLYGON" && w.one_object, [&] {
-            return who + " should be one POLYGON { ... }; " + (w.problem.empty() ? "it is not" : w.problem);
-        });
-        if (w.problem.empty()) {
-            t.check(w.vertices.size() == s.size(), [&] {
-                return who + " has " + std::to_string(w.vertices.size()) + " vertices; it should have " + std::to_string(s.size());
-            });
-            for (std::size_t k = 0; k < std::min(w.vertices.size(), s.size()); ++k) {
-                const point q = w.vertices[k], p = s[k];
-                t.check(within_ulps(q.x, p.x, 4) && within_ulps(q.y, p.y, 4) && within_ulps(q.z, p.z, 4), [&] {
-                    return who + " has vertex " + std::to_string(k + 1) + " = " + show(q) + "; it should be " + show(p) +
-                           " (± 4 ulps, in the order given)";
+        check_write_reads_back(
+            t, *original, "POLYGON", describe(s),
+            [&](const written_object& w, const std::string& who) {
+                t.check(w.vertices.size() == s.size(), [&] {
+                    return who + " has " + std::to_string(w.vertices.size()) + " vertices; it should have " + std::to_string(s.size());
                 });
-            }
-            compare_surface(w.surf, original->surf(), who, t);
-        }
-        const auto back = read_one(text);
-        compare_surface(surface_of(*back), original->surf(), "the POLYGON read back from \"" + text + "\"", t);
-        check_same_polygon(t, *back, *original, s, "the POLYGON read back from \"" + text + "\"");
+                for (std::size_t k = 0; k < std::min(w.vertices.size(), s.size()); ++k) {
+                    const point q = w.vertices[k], p = s[k];
+                    t.check(within_ulps(q.x, p.x, 4) && within_ulps(q.y, p.y, 4) && within_ulps(q.z, p.z, 4), [&] {
+                        return who + " has vertex " + std::to_string(k + 1) + " = " + show(q) + "; it should be " + show(p) +
+                               " (± 4 ulps, in the order given)";
+                    });
+                }
+            },
+            [&](const rtab_component& back, const std::string& what) { check_same_polygon(t, back, *original, s, what); });
     }
     t.report();
 }

@@ -97,7 +97,7 @@ void check_same_sphere(tally& t, const rtab_component& got, const primitive& wan
                    num(normal_tolerance) + ")";
         });
         const point from = b.center + b.radius * random.uniform(1.5, 20) * random.direction();
-        const ray r = through(from, k % 2 == 0 ? in : out);
+        const ray r = ray_through(from, k % 2 == 0 ? in : out);
         const intersection i = got.intersect(r), j = want.intersect(r);
         const double tol = tolerance_of(sphere_oracle(b.center, b.radius, r)) + slack;
         const bool same = (i.hit() && j.hit() && std::fabs(i.t - j.t) <= tol && i.object == &got) ||
@@ -126,7 +126,7 @@ TEST_CASE("sphere: rays from outside hit the near side at the distance the geome
         const auto s = make_sphere(b.center, b.radius);
         for (int k = 0; k < 300; ++k) {
             const point from = b.center + b.radius * random.uniform(1.05, 60) * random.direction();
-            check_ray(t, *s, b, through(from, inside(random, b, 0.999)));
+            check_ray(t, *s, b, ray_through(from, inside(random, b, 0.999)));
         }
     }
     t.report();
@@ -363,7 +363,7 @@ TEST_CASE("sphere: make_sphere refuses a radius that is zero, negative, NaN or i
     // Small and large spheres are spheres: they are made and hit.
     for (const ball& b : {ball{point(1, 1, 1), 1e-3}, ball{point(0, 0, 0), 1e4}}) {
         const auto s = make_sphere(b.center, b.radius);
-        check_ray(t, *s, b, through(b.center + vector(0, 0, 3 * b.radius), b.center));
+        check_ray(t, *s, b, ray_through(b.center + vector(0, 0, 3 * b.radius), b.center));
     }
     t.report();
 }
@@ -373,33 +373,18 @@ TEST_CASE("sphere: a SPHERE in a scene file is the sphere its centre, radius and
     const ball b{point(0.1 + 1e-13, -1.0 / 3, 7.25), 2.0 / 3};
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     const std::string text = "SPHERE { radius " + num(b.radius) + " center (" + num(b.center.x) + ", " + num(b.center.y) + ", " +
-                             num(b.center.z) + ") color " + num(surf.clr.r) + " " + num(surf.clr.g) + " " + num(surf.clr.b) +
-                             " " + num(surf.clr.a) + " kdr " + num(surf.kdr) + " ksr " + num(surf.ksr) + " kdt " +
-                             num(surf.kdt) + " kst " + num(surf.kst) + " n " + num(surf.n) + " ior " + num(surf.ior) +
-                             " zero_t " + num(surf.zero_t) + " }";
-    const auto got = read_one(text);
+                             num(b.center.z) + ")" + surface_text(surf) + " }";
     const auto want = make_sphere(b.center, b.radius);
-    want->set_surface(surf);
-    compare_surface(surface_of(*got), surf, "the SPHERE read from " + text, t);
-    check_same_sphere(t, *got, *want, b, "the SPHERE read from " + text);
+    check_read_as(t, text, "SPHERE", *want, surf,
+                  [&](const rtab_component& got, const std::string& what) { check_same_sphere(t, got, *want, b, what); });
     t.report();
 }
 
 TEST_CASE("sphere: a bad SPHERE in a scene file is refused at the value at fault, a good one is read", "[02][sphere][scene_io][detail]") {
     tally t("SPHERE blocks in scene files");
-    const struct {
-        const char* text;
-        const char* where;
-    } bad[] = {{"SPHERE { radius 0 }", "hidden.ray_trace:1:17"},
-               {"SPHERE {\n  center 0 0 0\n  radius -2.5\n}", "hidden.ray_trace:3:10"},
-               {"SPHERE { center (1, 2, 3, 0) radius 1 }", "hidden.ray_trace:1:17"}};
-    for (const auto& c : bad) {
-        const std::string message = read_error(c.text);
-        t.check(message.find(c.where) != std::string::npos, [&] {
-            return std::string("reading \"") + c.text + "\" should fail with a vl::file_error at " + c.where + "; it gave: " +
-                   message;
-        });
-    }
+    check_refused(t, {{"SPHERE { radius 0 }", "hidden.ray_trace:1:17"},
+                      {"SPHERE {\n  center 0 0 0\n  radius -2.5\n}", "hidden.ray_trace:3:10"},
+                      {"SPHERE { center (1, 2, 3, 0) radius 1 }", "hidden.ray_trace:1:17"}});
     const auto good = read_one("SPHERE { center 0 0 -10 radius 2 }");
     const auto want = make_sphere(point(0, 0, -10), 2);
     check_same_sphere(t, *good, *want, {point(0, 0, -10), 2}, "SPHERE { center 0 0 -10 radius 2 }");
@@ -421,30 +406,21 @@ TEST_CASE("sphere: write() keeps every digit of the centre, the radius and each 
                           ball{point(123456.789012345, 1e-7, -1.0 / 7), 2.5e-7 / 3}}) {
         const auto original = make_sphere(b.center, b.radius);
         original->set_surface(full_precision_surface(-1e-9 / 3));
-        const std::string text = text_of(*original);
-        const std::string who = "write() of " + describe(b) + " gave \"" + text + "\", which";
-        // What the text says, read by the tests' own reader.
-        const written_object w = parse_written(text);
-        t.check(w.problem.empty() && w.type == "SPHERE" && w.one_object, [&] {
-            return who + " should be one SPHERE { ... }; " + (w.problem.empty() ? "it is not" : w.problem);
-        });
-        if (w.problem.empty()) {
-            const std::vector<double> c = w.keys.at("center");
-            const double want_c[3] = {b.center.x, b.center.y, b.center.z};
-            for (int a = 0; a < 3; ++a)
-                t.check(within_ulps(c[static_cast<std::size_t>(a)], want_c[a], 4), [&] {
-                    return who + " has centre " + std::string(1, "xyz"[a]) + " = " + num(c[static_cast<std::size_t>(a)]) +
-                           "; it should be " + num(want_c[a]) + " (± 4 ulps)";
-                });
-            const double r = w.keys.at("radius")[0];
-            t.check(within_ulps(r, b.radius, 4),
-                    [&] { return who + " has radius " + num(r) + "; it should be " + num(b.radius) + " (± 4 ulps)"; });
-            compare_surface(w.surf, original->surf(), who, t);
-        }
-        // What your read() makes of it: the same sphere.
-        const auto back = read_one(text);
-        compare_surface(surface_of(*back), original->surf(), "the SPHERE read back from \"" + text + "\"", t);
-        check_same_sphere(t, *back, *original, b, "the SPHERE read back from \"" + text + "\"");
+        check_write_reads_back(
+            t, *original, "SPHERE", describe(b),
+            [&](const written_object& w, const std::string& who) {
+                const std::vector<double> c = w.keys.at("center");
+                const double want_c[3] = {b.center.x, b.center.y, b.center.z};
+                for (int a = 0; a < 3; ++a)
+                    t.check(within_ulps(c[static_cast<std::size_t>(a)], want_c[a], 4), [&] {
+                        return who + " has centre " + std::string(1, "xyz"[a]) + " = " + num(c[static_cast<std::size_t>(a)]) +
+                               "; it should be " + num(want_c[a]) + " (± 4 ulps)";
+                    });
+                const double r = w.keys.at("radius")[0];
+                t.check(within_ulps(r, b.radius, 4),
+                        [&] { return who + " has radius " + num(r) + "; it should be " + num(b.radius) + " (± 4 ulps)"; });
+            },
+            [&](const rtab_component& back, const std::string& what) { check_same_sphere(t, back, *original, b, what); });
     }
     t.report();
 }
@@ -490,7 +466,7 @@ TEST_CASE("sweep: sphere: hits on spheres 1 to 1e9 radii away", "[02][sweep]") {
         tally t("rays at spheres " + num(x) + " radii away");
         for (int sphere = 0; sphere < 6; ++sphere) {
             const double radius = std::pow(10.0, random.uniform(-2, 2));
-            const point eye = random.in_box(10);
+            const point eye = random.in_cube(10);
             const vector towards = random.direction();
             const ball b{eye + (1 + x) * radius * towards, radius};
             const int rays = 20;
@@ -505,7 +481,7 @@ TEST_CASE("sweep: sphere: hits on spheres 1 to 1e9 radii away", "[02][sweep]") {
                 const double offset = k % 3 == 0   ? random.uniform(0, 0.99)
                                       : k % 3 == 1 ? random.uniform(0.99, 0.9999)
                                                    : random.uniform(1.0001, 1.01);
-                sweep_ray(t, *s, b, through(eye, b.center + offset * b.radius * side));
+                sweep_ray(t, *s, b, ray_through(eye, b.center + offset * b.radius * side));
             }
         }
         t.report_sweep_point(x);

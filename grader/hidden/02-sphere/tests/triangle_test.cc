@@ -92,11 +92,7 @@ void check_same_triangle(tally& t, const rtab_component& got, const primitive& w
                                          std::fabs(k.b.y), std::fabs(k.b.z), std::fabs(k.c.x), std::fabs(k.c.y),
                                          std::fabs(k.c.z)});
     const double slack = 8 * std::numeric_limits<double>::epsilon() * coordinates;
-    const point lo = got.min_point(), hi = got.max_point(), wlo = want.min_point(), whi = want.max_point();
-    t.check((lo - wlo).length() <= slack && (hi - whi).length() <= slack, [&] {
-        return who + "'s box runs from " + show(lo) + " to " + show(hi) + "; it should run from " + show(wlo) + " to " +
-               show(whi) + " (± " + num(slack) + ")";
-    });
+    check_same_box(t, got, want, who, slack);
     const point middle = at(k, 0.3, 0.3);
     const vector gn = got.normal(middle), wn = want.normal(middle);
     t.check((gn - wn).length() <= 1e-12 + 100 * slack / size_of(k), [&] {
@@ -108,7 +104,7 @@ void check_same_triangle(tally& t, const rtab_component& got, const primitive& w
     for (int j = 0; j < 40; ++j) {
         double u = random.uniform(-0.5, 1.2), v = random.uniform(-0.5, 1.2);
         const point target = at(k, u, v);
-        const ray r = through(target + size_of(k) * random.uniform(0.5, 5) * (j % 2 == 0 ? n : -n) + random.jitter(size_of(k)),
+        const ray r = ray_through(target + size_of(k) * random.uniform(0.5, 5) * (j % 2 == 0 ? n : -n) + random.offset(size_of(k)),
                               target);
         const triangle_answer exact = triangle_oracle(k.a, k.b, k.c, r);
         if (std::fabs(static_cast<double>(exact.min_weight())) < 1e-6) continue;
@@ -127,9 +123,7 @@ std::string triangle_text(const corners& k, const vl::surface& s, bool with_surf
     std::string text = "TRIANGLE { c " + num(k.c.x) + " " + num(k.c.y) + " " + num(k.c.z) + " a (" + num(k.a.x) + ", " +
                        num(k.a.y) + ", " + num(k.a.z) + ") b " + num(k.b.x) + " " + num(k.b.y) + " " + num(k.b.z);
     if (with_surface)
-        text += " color " + num(s.clr.r) + " " + num(s.clr.g) + " " + num(s.clr.b) + " " + num(s.clr.a) + " kdr " + num(s.kdr) +
-                " ksr " + num(s.ksr) + " kdt " + num(s.kdt) + " kst " + num(s.kst) + " n " + num(s.n) + " ior " + num(s.ior) +
-                " zero_t " + num(s.zero_t);
+        text += surface_text(s);
     return text + " }";
 }
 
@@ -148,8 +142,8 @@ TEST_CASE("triangle: rays aimed at points inside a triangle hit it there, from t
             if (u + v > 1) u = 1 - u, v = 1 - v;
             const point target = at(k, 0.002 + 0.996 * u, 0.002 + 0.996 * v);
             const point from = target + size_of(k) * random.uniform(0.05, 20) * (j % 2 == 0 ? n : -n) +
-                               random.jitter(size_of(k) * 3);
-            const ray r = through(from, target);
+                               random.offset(size_of(k) * 3);
+            const ray r = ray_through(from, target);
             if (std::fabs(r.direction() * n) < 0.02) continue;
             check_ray(t, *tri, k, r);
         }
@@ -172,19 +166,19 @@ TEST_CASE("triangle: rays aimed just outside each edge, beyond each corner or aw
                 for (const double gap : {1e-4, 1e-2, 0.3}) {
                     const point target = on_edge + gap * size_of(k) * outward;
                     for (const double side : {1.0, -1.0}) {
-                        const point from = target + size_of(k) * random.uniform(0.5, 10) * side * n + random.jitter(0.5 * size_of(k));
-                        check_ray(t, *tri, k, through(from, target));
+                        const point from = target + size_of(k) * random.uniform(0.5, 10) * side * n + random.offset(0.5 * size_of(k));
+                        check_ray(t, *tri, k, ray_through(from, target));
                     }
                 }
             }
             // Beyond the corner, along the line from the centre.
             const point centre = at(k, 1.0 / 3, 1.0 / 3);
-            check_ray(t, *tri, k, through(centre + size_of(k) * n, centre + 1.05 * (q - centre)));
+            check_ray(t, *tri, k, ray_through(centre + size_of(k) * n, centre + 1.05 * (q - centre)));
         }
         // Pointing away from the triangle, from either side.
         for (int j = 0; j < 50; ++j) {
             const point inside = at(k, 0.3, 0.3);
-            const point origin = inside + size_of(k) * random.uniform(0.01, 10) * (j % 2 == 0 ? n : -n) + random.jitter(0.3 * size_of(k));
+            const point origin = inside + size_of(k) * random.uniform(0.01, 10) * (j % 2 == 0 ? n : -n) + random.offset(0.3 * size_of(k));
             check_ray(t, *tri, k, ray(origin, origin - inside));
         }
     }
@@ -195,15 +189,15 @@ TEST_CASE("triangle: a triangle is hit from behind as well as from the front", "
     tally t("pairs of rays from either side through the same point");
     sampler random(413);
     for (int j = 0; j < 500; ++j) {
-        const corners k{random.in_box(3), random.in_box(3), random.in_box(3)};
+        const corners k{random.in_cube(3), random.in_cube(3), random.in_cube(3)};
         const vector cross = (k.b - k.a) % (k.c - k.a);
         if (cross.length() < 0.5) continue;
         const auto tri = make_triangle(k.a, k.b, k.c);
         const point target = at(k, random.uniform(0.05, 0.45), random.uniform(0.05, 0.45));
         vector d = random.direction();
         if (std::fabs(d * cross.unit()) < 0.1) d = d + 0.5 * cross.unit();
-        check_ray(t, *tri, k, through(target + random.uniform(0.1, 10) * d, target));
-        check_ray(t, *tri, k, through(target - random.uniform(0.1, 10) * d, target));
+        check_ray(t, *tri, k, ray_through(target + random.uniform(0.1, 10) * d, target));
+        check_ray(t, *tri, k, ray_through(target - random.uniform(0.1, 10) * d, target));
     }
     t.report();
 }
@@ -265,19 +259,7 @@ TEST_CASE("triangle: zero_t, positive or negative, hides a hit up to its absolut
     tally t("a triangle hit at t = 0.3 with different zero_t");
     const corners k{point(0, 0, -0.3), point(1, 0, -0.3), point(0, 1, -0.3)};
     const auto tri = make_triangle(k.a, k.b, k.c);
-    for (const double zero_t : {0.0, 1e-6, -1e-6, 0.2, -0.2, 0.29, -0.29, 0.31, -0.31, 0.5, -0.5}) {
-        vl::surface s;
-        s.zero_t = zero_t;
-        tri->set_surface(s);
-        for (const ray& r : {ray(point(0.25, 0.25, 0), vector(0, 0, -1)), ray(point(0.25, 0.25, -0.6), vector(0, 0, 1))}) {
-            const bool want = 0.3 > std::fabs(zero_t);
-            const intersection i = tri->intersect(r);
-            t.check(want ? hit_near(i, tri.get(), 0.3, 1e-12) : clean_miss(i), [&] {
-                return show(r) + " meets " + describe(k) + " at t = 0.3; with zero_t = " + num(zero_t) + " it should " +
-                       (want ? "hit there (± 1e-12)" : "miss") + "; yours returned " + show(i, tri.get());
-            });
-        }
-    }
+    check_zero_t_hides_hit_at_0_3(t, *tri, describe(k), {ray(point(0.25, 0.25, 0), vector(0, 0, -1)), ray(point(0.25, 0.25, -0.6), vector(0, 0, 1))});
     t.report();
 }
 
@@ -293,11 +275,11 @@ TEST_CASE("triangle: a small triangle a million units away is hit inside and mis
         for (const double f : {0.1, 0.5, 0.9}) {
             const point on_edge = q + f * (s - q);
             const vector inward = (opposite - on_edge).unit();
-            check_ray(t, *tri, k, through(eye, on_edge + 1e-3 * inward), 1e-5);
-            check_ray(t, *tri, k, through(eye, on_edge - 1e-3 * inward), 1e-5);
+            check_ray(t, *tri, k, ray_through(eye, on_edge + 1e-3 * inward), 1e-5);
+            check_ray(t, *tri, k, ray_through(eye, on_edge - 1e-3 * inward), 1e-5);
         }
     }
-    check_ray(t, *tri, k, through(eye, at(k, 1.0 / 3, 1.0 / 3)));
+    check_ray(t, *tri, k, ray_through(eye, at(k, 1.0 / 3, 1.0 / 3)));
     t.report();
 }
 
@@ -338,7 +320,7 @@ TEST_CASE("triangle: rays through the spokes and the hub of a fan of sixteen tri
         const point target = k % 4 == 0 ? hub : hub + random.uniform(0.02, 0.9) * (rim[spoke] - hub);
         vector d = random.direction();
         if (std::fabs(d.y) < 0.4) continue;  // across the fan, not along it
-        const ray r = through(target + random.uniform(1, 50) * d, target);
+        const ray r = ray_through(target + random.uniform(1, 50) * d, target);
         t.check(mesh_hit(fan, r), [&] { return show(r) + " passes through " + show(target) + " and hits none of the triangles"; });
     }
     t.check(t.tried() > 10000, [] { return std::string("too few rays were tried"); });
@@ -365,7 +347,7 @@ TEST_CASE("triangle: rays from inside a closed octahedron mesh never escape thro
         const point from = centre + 0.3 * vector(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
         const auto& [p, q] = edges[k % 12];
         const point target = k % 5 == 0 ? corner[k % 6] : p + random.uniform(0, 1) * (q - p);
-        const ray r = through(from, target);
+        const ray r = ray_through(from, target);
         t.check(mesh_hit(solid, r), [&] { return show(r) + " aimed at " + show(target) + " escapes through the mesh"; });
     }
     t.report();
@@ -406,7 +388,7 @@ TEST_CASE("triangle: a bumpy grid mesh lets no ray through its shared edges and 
         }
         }
         const vector d = vector(random.uniform(-0.6, 0.6), 1, random.uniform(-0.6, 0.6)) * (k % 2 == 0 ? 1 : -1);
-        const ray r = through(target + random.uniform(2, 30) * d.unit(), target);
+        const ray r = ray_through(target + random.uniform(2, 30) * d.unit(), target);
         t.check(mesh_hit(surface, r), [&] { return show(r) + " aimed at " + show(target) + " passes through the mesh"; });
     }
     t.report();
@@ -418,7 +400,7 @@ TEST_CASE("triangle: the normal follows the counter-clockwise winding, whichever
     tally t("normals");
     sampler random(416);
     std::vector<corners> all = triangles;
-    for (int j = 0; j < 20; ++j) all.push_back({random.in_box(5), random.in_box(5), random.in_box(5)});
+    for (int j = 0; j < 20; ++j) all.push_back({random.in_cube(5), random.in_cube(5), random.in_cube(5)});
     for (const corners& k : all) {
         if (((k.b - k.a) % (k.c - k.a)).length() < 1e-3 * size_of(k) * size_of(k)) continue;
         const rvec want = unit(cross(to_r(k.b) - to_r(k.a), to_r(k.c) - to_r(k.a)));
@@ -457,12 +439,7 @@ TEST_CASE("triangle: its box is exactly the smallest one around the three vertic
          point(0.3, 0.6, 0.9)},
     };
     for (const auto& c : cases) {
-        const auto tri = make_triangle(c.k.a, c.k.b, c.k.c);
-        const point lo = tri->min_point(), hi = tri->max_point();
-        t.check(lo == c.lo && hi == c.hi, [&] {
-            return "the box of " + describe(c.k) + " should run from " + show(c.lo) + " to " + show(c.hi) + "; yours runs from " +
-                   show(lo) + " to " + show(hi);
-        });
+        check_exact_box(t, *make_triangle(c.k.a, c.k.b, c.k.c), describe(c.k), c.lo, c.hi);
     }
     t.report();
 }
@@ -496,11 +473,9 @@ TEST_CASE("triangle: a TRIANGLE in a scene file is the triangle its vertices and
     const corners k{point(0.1 + 1e-13, -1.0 / 3, 7.25), point(1.0 / 7, 2.5, -0.2), point(-2.0 / 3, 0.4, 1e-7)};
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     const std::string text = triangle_text(k, surf, true);
-    const auto got = read_one(text);
     const auto want = make_triangle(k.a, k.b, k.c);
-    want->set_surface(surf);
-    compare_surface(surface_of(*got), surf, "the TRIANGLE read from " + text, t);
-    check_same_triangle(t, *got, *want, k, "the TRIANGLE read from " + text);
+    check_read_as(t, text, "TRIANGLE", *want, surf,
+                  [&](const rtab_component& got, const std::string& what) { check_same_triangle(t, got, *want, k, what); });
     t.report();
 }
 
@@ -539,27 +514,20 @@ TEST_CASE("triangle: write() keeps every digit of the vertices and of each surfa
                                      point(123456.5 + 1e-9, 1.0 / 3, 2.0 / 3)}}) {
         const auto original = make_triangle(k.a, k.b, k.c);
         original->set_surface(full_precision_surface(-1e-9 / 3));
-        const std::string text = text_of(*original);
-        const std::string who = "write() of " + describe(k) + " gave \"" + text + "\", which";
-        const written_object w = parse_written(text);
-        t.check(w.problem.empty() && w.type == "TRIANGLE" && w.one_object, [&] {
-            return who + " should be one TRIANGLE { ... }; " + (w.problem.empty() ? "it is not" : w.problem);
-        });
-        if (w.problem.empty()) {
-            const std::pair<const char*, point> vertices[] = {{"a", k.a}, {"b", k.b}, {"c", k.c}};
-            for (const auto& [name, p] : vertices) {
-                const std::vector<double> q = w.keys.at(name);
-                const bool ok = within_ulps(q[0], p.x, 4) && within_ulps(q[1], p.y, 4) && within_ulps(q[2], p.z, 4);
-                t.check(ok, [&, name = name, p = p] {
-                    return who + " has vertex " + name + " = " + show(point(q[0], q[1], q[2])) + "; it should be " + show(p) +
-                           " (± 4 ulps)";
-                });
-            }
-            compare_surface(w.surf, original->surf(), who, t);
-        }
-        const auto back = read_one(text);
-        compare_surface(surface_of(*back), original->surf(), "the TRIANGLE read back from \"" + text + "\"", t);
-        check_same_triangle(t, *back, *original, k, "the TRIANGLE read back from \"" + text + "\"");
+        check_write_reads_back(
+            t, *original, "TRIANGLE", describe(k),
+            [&](const written_object& w, const std::string& who) {
+                const std::pair<const char*, point> vertices[] = {{"a", k.a}, {"b", k.b}, {"c", k.c}};
+                for (const auto& [name, p] : vertices) {
+                    const std::vector<double> q = w.keys.at(name);
+                    const bool ok = within_ulps(q[0], p.x, 4) && within_ulps(q[1], p.y, 4) && within_ulps(q[2], p.z, 4);
+                    t.check(ok, [&, name = name, p = p] {
+                        return who + " has vertex " + name + " = " + show(point(q[0], q[1], q[2])) + "; it should be " + show(p) +
+                               " (± 4 ulps)";
+                    });
+                }
+            },
+            [&](const rtab_component& back, const std::string& what) { check_same_triangle(t, back, *original, k, what); });
     }
     t.report();
 }
@@ -587,7 +555,7 @@ TEST_CASE("sweep: triangle: rays aimed 1e-17 to 0.1 of a triangle's size from a 
     for (int f = 0; f < 6; ++f) {
         fan n;
         n.size = std::pow(10.0, random.uniform(-1, 2));
-        n.hub = random.in_box(f % 2 == 0 ? 10 : 1e3);
+        n.hub = random.in_cube(f % 2 == 0 ? 10 : 1e3);
         n.up = random.direction();
         vector u, v;
         plane_axes(n.up, u, v);
@@ -635,7 +603,7 @@ TEST_CASE("sweep: triangle: rays aimed 1e-17 to 0.1 of a triangle's size from a 
                 vector d = random.direction();
                 if (d * normal < 0) d = -d;
                 if (d * normal < 0.5) d = (d + normal).unit();
-                const ray r = through(target + n.size * random.uniform(0.5, 20) * d, target);
+                const ray r = ray_through(target + n.size * random.uniform(0.5, 20) * d, target);
                 bool hit = false;
                 std::string threw = n.problem;
                 if (threw.empty()) {

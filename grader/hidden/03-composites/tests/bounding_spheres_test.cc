@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "composite_checks.hh"
 #include "hidden_support.hh"
 
 using vl::intersection;
@@ -381,17 +382,12 @@ TEST_CASE("boundsph: rule 2 names the bounding sphere itself, also when a child 
     namer names;
     auto bs = make_bounding_sphere();
     names.name(bs.get(), "the bounding sphere itself");
-    auto hollow = std::make_unique<probe_hollow>(point(0, 0, 0), point(1, 1, 1));
-    names.name(hollow.get(), "the hollow child (rule 2: the composite returns composite_only of itself)");
-    bs->insert(std::move(hollow));
+    insert_hollow_child(names, *bs);
     probe_set set;
     bs->insert(set.add(std::make_unique<probe_sphere>(point(3, 0, 0), 0.25)));
-    const ray into_hollow(point(0.5, 0.5, -5), vector(0, 0, 1));
-    const intersection got = bs->intersect(into_hollow);
-    t.check(got.is_composite_only() && got.object == bs.get(), [&] {
-        return show(into_hollow) + " enters only a child that answers composite_only of itself: the BOUNDSPH should return "
-               "composite_only of the BOUNDSPH; yours returned " + show(got, names);
-    });
+    check_composite_only_of(t, names, *bs, ray(point(0.5, 0.5, -5), vector(0, 0, 1)),
+                            " enters only a child that answers composite_only of itself: the BOUNDSPH should return "
+                            "composite_only of the BOUNDSPH");
     auto outer = make_bounding_sphere();
     names.name(outer.get(), "the outer bounding sphere");
     auto inner = make_bounding_sphere();
@@ -399,12 +395,9 @@ TEST_CASE("boundsph: rule 2 names the bounding sphere itself, also when a child 
     inner->insert(set.add(std::make_unique<probe_sphere>(point(0, 0, 0), 0.5)));
     inner->insert(set.add(std::make_unique<probe_sphere>(point(2, 2, 0), 0.5)));
     outer->insert(std::move(inner));
-    const ray between(point(1, 1, -5), vector(0, 0, 1));
-    const intersection g2 = outer->intersect(between);
-    t.check(g2.is_composite_only() && g2.object == outer.get(), [&] {
-        return show(between) + " enters a bounding sphere inside a bounding sphere but hits nothing: the outer one should "
-               "return composite_only of itself; yours returned " + show(g2, names);
-    });
+    check_composite_only_of(t, names, *outer, ray(point(1, 1, -5), vector(0, 0, 1)),
+                            " enters a bounding sphere inside a bounding sphere but hits nothing: the outer one should "
+                            "return composite_only of itself");
     auto empty = make_bounding_sphere();
     for (const ray& r : {ray(point(0, 0, 5), vector(0, 0, -1)), ray(point(0, 0, 0), vector(1, 0, 0))}) {
         intersection g3;
@@ -426,28 +419,14 @@ TEST_CASE("boundsph: min_point() and max_point() are the union of the children's
     dice random(130);
     auto bs = make_bounding_sphere();
     probe_set set;
-    rvec lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
+    box_union children;
     for (int k = 0; k < 12; ++k) {
-        const std::size_t before = set.all.size();
         random_probes(set, *bs, random, 1, random.in_cube(-4, 4), random.uniform(0.2, 3));
-        (void)before;
-        const rvec a = to_r(set.all.back()->min_point()), b = to_r(set.all.back()->max_point());
-        lo = {std::min(lo.x, a.x), std::min(lo.y, a.y), std::min(lo.z, a.z)};
-        hi = {std::max(hi.x, b.x), std::max(hi.y, b.y), std::max(hi.z, b.z)};
-        check_point(t, "min_point() of the BOUNDSPH of its first " + std::to_string(k + 1) + " children", bs->min_point(), lo, 0);
-        check_point(t, "max_point() of the BOUNDSPH of its first " + std::to_string(k + 1) + " children", bs->max_point(), hi, 0);
+        children.add(*set.all.back());
+        check_box_is(t, *bs, children, "the BOUNDSPH of its first " + std::to_string(k + 1) + " children");
     }
     auto two = make_bounding_sphere();
-    two->insert(std::make_unique<probe_sphere>(point(0, 0, 0), 1));
-    two->insert(std::make_unique<probe_sphere>(point(5, 0, 0), 1));
-    for (const auto& [p, want] : {std::pair{point(0.5, 0.2, 0), true}, std::pair{point(5, 0.9, 0), true},
-                                  std::pair{point(2.5, 0, 0), false}, std::pair{point(0, 0, 1.5), false}}) {
-        const bool got = two->contains(p);
-        t.check(got == want, [&, p = p, want = want] {
-            return "contains(" + show(p) + ") of a BOUNDSPH of the unit spheres around (0, 0, 0) and (5, 0, 0) should be " +
-                   (want ? "true" : "false") + "; yours is " + (got ? "true" : "false");
-        });
-    }
+    check_contains_of_two_spheres(t, *two, "BOUNDSPH");
     t.report();
 }
 
@@ -457,11 +436,7 @@ TEST_CASE("boundsph: insert() refuses a child whose box is unknown, a null point
     auto bs = make_bounding_sphere();
     probe_set set;
     bs->insert(set.add(std::make_unique<probe_sphere>(point(0, 0, -5), 1)));
-    struct bad {
-        std::string what;
-        std::function<std::unique_ptr<rtab_component>()> make;
-    };
-    const bad children[] = {
+    check_insert_refuses(t, *bs, "BOUNDSPH", {
         {"a PLANE", [] { return vl::stage02::make_plane(point(0, 0, 0), vector(0, 1, 0)); }},
         {"an empty LIST", [] { return std::make_unique<vl::object_list>(); }},
         {"an empty BOUNDSPH", [] { return make_bounding_sphere(); }},
@@ -470,12 +445,7 @@ TEST_CASE("boundsph: insert() refuses a child whose box is unknown, a null point
          [nan] { return std::make_unique<probe_boxless>(point(0, nan, 0), point(1, 1, 1)); }},
         {"an object whose box is infinite", [inf] { return std::make_unique<probe_boxless>(point(0, 0, 0), point(1, 1, inf)); }},
         {"a null pointer", [] { return std::unique_ptr<rtab_component>(); }},
-    };
-    for (const bad& b : children) {
-        std::string message;
-        t.check(throws_usage_error([&] { bs->insert(b.make()); }, message),
-                [&] { return "insert() of " + b.what + " into a BOUNDSPH should throw vl::usage_error; " + message; });
-    }
+    }, [](const bad_child&, const std::string&) {});
     {
         rtab_composite* raw = make_bounding_sphere().release();
         raw->insert(std::make_unique<probe_sphere>(point(0, 0, 0), 1));
@@ -505,18 +475,9 @@ TEST_CASE("boundsph: the refusal of an unbounded child names both types and the 
                 return "inserting a PLANE into a BOUNDSPH should throw a vl::usage_error that names both types (BOUNDSPH, "
                        "PLANE) and says to put the plane beside it in a LIST; " + std::string(refused ? "yours says: " : "") + message;
             });
-    const struct {
-        const char* text;
-        const char* where;
-    } bad[] = {{"BOUNDSPH {\n  PROBE { }\n  PLANE { }\n}", "hidden.ray_trace:3:3"},
-               {"BOUNDSPH { SPHERE { } LIST { } }", "hidden.ray_trace:1:23"},
-               {"LIST { BOUNDSPH {\n\n    BOUNDSPH { }\n} }", "hidden.ray_trace:3:5"}};
-    for (const auto& c : bad) {
-        const std::string got = read_error(c.text);
-        t.check(got.find(c.where) != std::string::npos, [&] {
-            return std::string("reading \"") + c.text + "\" should fail with a vl::file_error at " + c.where + "; it gave: " + got;
-        });
-    }
+    check_refused(t, {{"BOUNDSPH {\n  PROBE { }\n  PLANE { }\n}", "hidden.ray_trace:3:3"},
+                      {"BOUNDSPH { SPHERE { } LIST { } }", "hidden.ray_trace:1:23"},
+                      {"LIST { BOUNDSPH {\n\n    BOUNDSPH { }\n} }", "hidden.ray_trace:3:5"}});
     t.report();
 }
 
@@ -530,30 +491,23 @@ TEST_CASE("boundsph: BOUNDSPH { ... } is read from a scene file with its childre
                 " id " + std::to_string(k) + " }\n";
     }
     text += "}";
-    for (int pass = 0; pass < 2; ++pass) {
-        const auto object = read_one(text);
-        const auto* bs = dynamic_cast<const rtab_composite*>(object.get());
-        VL_REQUIRE(bs != nullptr && object->type_name() == "BOUNDSPH",
-                   "reading \"" << text << "\" should give a BOUNDSPH; yours gave " << object->type_name());
-        probe_set set;
-        for (const auto& c : bs->children())
-            if (const auto* p = dynamic_cast<const probe*>(c.get())) set.track(p);
-        t.check(set.all.size() == 12, [&] {
-            return "the BOUNDSPH read from \"" + text + "\" should hold its 12 children; it holds " + std::to_string(set.all.size());
+    check_read_write_read(
+        t, text, "BOUNDSPH", 12,
+        [&](const rtab_composite& bs, const probe_set& set, int pass) {
+            if (set.all.empty()) return false;
+            const ball b = sphere_around(children_of(bs));
+            for (int k = 0; k < 200; ++k) {
+                const ray r = ray_at_distance(random, b, random.uniform(0, 1.2));
+                const int m = meets(r, b);
+                if (m < 0) continue;
+                check_against_list(t, pass == 0 ? "BOUNDSPH read from a scene file" : "BOUNDSPH read back from what write() wrote",
+                                   &bs, set, r, bs.intersect(r), m == 1);
+            }
+            return true;
+        },
+        [&](const std::string& written) {
+            t.check(written.rfind("BOUNDSPH", 0) == 0, [&] { return "write() of a BOUNDSPH should start with \"BOUNDSPH {\"; yours wrote \"" + written.substr(0, 100) + "\""; });
         });
-        if (set.all.empty()) break;
-        const ball b = sphere_around(children_of(*bs));
-        for (int k = 0; k < 200; ++k) {
-            const ray r = ray_at_distance(random, b, random.uniform(0, 1.2));
-            const int m = meets(r, b);
-            if (m < 0) continue;
-            check_against_list(t, pass == 0 ? "BOUNDSPH read from a scene file" : "BOUNDSPH read back from what write() wrote",
-                               bs, set, r, bs->intersect(r), m == 1);
-        }
-        const std::string written = text_of(*object);
-        t.check(written.rfind("BOUNDSPH", 0) == 0, [&] { return "write() of a BOUNDSPH should start with \"BOUNDSPH {\"; yours wrote \"" + written.substr(0, 100) + "\""; });
-        text = written;
-    }
     t.report();
 }
 
@@ -598,7 +552,7 @@ TEST_CASE("fracsph: rays hit the nearest sphere of the fractal at the right dist
             const frac_node& aim = model.nodes[static_cast<std::size_t>(random.below(static_cast<int>(model.nodes.size())))];
             const point target = k % 2 == 0 ? to_point(aim.c) + static_cast<double>(aim.r) * random.uniform(0, 1.1) * random.direction()
                                             : to_point(model.nodes[0].c) + static_cast<double>(extent) * random.uniform(0, 1.1) * random.direction();
-            const ray r = through(to_point(model.nodes[0].c) + static_cast<double>(extent) * 3 * random.direction(), target);
+            const ray r = ray_through(to_point(model.nodes[0].c) + static_cast<double>(extent) * 3 * random.direction(), target);
             const auto [want, which] = model.nearest(r, 1e-6L);
             const intersection got = frac->intersect(r);
             const real scale = extent + len(to_r(r.origin()) - model.nodes[0].c);
@@ -640,7 +594,7 @@ TEST_CASE("fracsph: the bounds are tight: each ray makes exactly the sphere test
             const frac_node& aim = model.nodes[static_cast<std::size_t>(random.below(static_cast<int>(model.nodes.size())))];
             const point target = k % 3 == 0 ? to_point(aim.c) + static_cast<double>(aim.bound) * random.uniform(0, 1.3) * random.direction()
                                             : to_point(model.nodes[0].c) + static_cast<double>(extent) * random.uniform(0, 1.3) * random.direction();
-            const ray r = through(to_point(model.nodes[0].c) + static_cast<double>(extent) * random.uniform(1.5, 4) * random.direction(), target);
+            const ray r = ray_through(to_point(model.nodes[0].c) + static_cast<double>(extent) * random.uniform(1.5, 4) * random.direction(), target);
             std::uint64_t bounds = 0, spheres = 0;
             if (!model.cost_of(r, bounds, spheres)) continue;
             const cost c = measure([&] { frac->intersect(r); });
@@ -797,18 +751,9 @@ TEST_CASE("fracsph: make_frac_sphere() and the scene file refuse a depth outside
                    ") should throw vl::usage_error; " + message;
         });
     }
-    const struct {
-        const char* text;
-        const char* where;
-    } files[] = {{"FRACSPH { depth 8 }", "hidden.ray_trace:1:17"},
-                 {"FRACSPH {\n  ratio 1\n}", "hidden.ray_trace:2:9"},
-                 {"FRACSPH { radius 0 }", "hidden.ray_trace:1:18"}};
-    for (const auto& f : files) {
-        const std::string message = read_error(f.text);
-        t.check(message.find(f.where) != std::string::npos, [&] {
-            return std::string("reading \"") + f.text + "\" should fail with a vl::file_error at " + f.where + "; it gave: " + message;
-        });
-    }
+    check_refused(t, {{"FRACSPH { depth 8 }", "hidden.ray_trace:1:17"},
+                      {"FRACSPH {\n  ratio 1\n}", "hidden.ray_trace:2:9"},
+                      {"FRACSPH { radius 0 }", "hidden.ray_trace:1:18"}});
     auto frac = make_frac_sphere(point(0, 0, 0), 1, 1, 0.5);
     std::string message;
     t.check(throws_usage_error([&] { frac->insert(std::make_unique<probe_sphere>(point(5, 0, 0), 1)); }, message),

@@ -169,7 +169,7 @@ TEST_CASE("box: rays from outside hit the face they enter at the right distance,
         const auto box = make_box(b.lo, b.hi);
         for (int k = 0; k < 300; ++k) {
             const point from = centre_of(b) + size_of(b) * random.uniform(0.8, 5) * random.direction();
-            check_hit(t, *box, b, through(from, inside_point(random, b, 0.001)), false);
+            check_hit(t, *box, b, ray_through(from, inside_point(random, b, 0.001)), false);
         }
         // Straight at each face along its normal, and from each side along the axes.
         for (int f = 0; f < 6; ++f) {
@@ -224,7 +224,7 @@ TEST_CASE("box: a ray that misses costs one box test and no face test, one that 
                 const double beyond = random.below(2) == 0 ? lo - w * random.uniform(0.05, 1) : hi + w * random.uniform(0.05, 1);
                 (axis == 0 ? target.x : axis == 1 ? target.y : target.z) = beyond;
             }
-            const ray r = through(from, target);
+            const ray r = ray_through(from, target);
             const crossing c = cross(b, r);
             const bool hits = c.meets && c.t1 > 0;
             const real scale = scale_of(b, r);
@@ -369,7 +369,7 @@ TEST_CASE("box: min_point() and max_point() are the corners, and BOX { } is the 
     dice random(260);
     const box_shape unit{point(0, 0, 0), point(1, 1, 1)};
     for (int k = 0; k < 50; ++k)
-        check_hit(t, *unit_box, unit, through(point(0.5, 0.5, 0.5) + 4 * random.direction(), inside_point(random, unit, 0.01)), false);
+        check_hit(t, *unit_box, unit, ray_through(point(0.5, 0.5, 0.5) + 4 * random.direction(), inside_point(random, unit, 0.01)), false);
     t.report();
 }
 
@@ -391,7 +391,7 @@ TEST_CASE("box: insert() and delete_all_children() are refused with the reason, 
     });
     dice random(270);
     for (int k = 0; k < 30; ++k)
-        check_hit(t, *box, b, through(point(0, 0, 0) + 6 * random.direction(), inside_point(random, b, 0.01)), false);
+        check_hit(t, *box, b, ray_through(point(0, 0, 0) + 6 * random.direction(), inside_point(random, b, 0.01)), false);
     t.report();
 }
 

@@ -65,7 +65,7 @@ inline std::vector<ray> rays_through_cube(std::size_t count, unsigned seed) {
     dice random(seed);
     std::vector<ray> out;
     const point middle(0.5, 0.5, 0.5);
-    for (std::size_t k = 0; k < count; ++k) out.push_back(through(middle + 2.5 * random.direction(), random.in_cube()));
+    for (std::size_t k = 0; k < count; ++k) out.push_back(ray_through(middle + 2.5 * random.direction(), random.in_cube()));
     return out;
 }
 
@@ -75,7 +75,7 @@ inline std::vector<ray> camera_rays(int w, int h) {
     const point eye(0.5, 0.5, 3);
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < w; ++i)
-            out.push_back(through(eye, point((i + 0.5) / w, (j + 0.5) / h, 0.5)));
+            out.push_back(ray_through(eye, point((i + 0.5) / w, (j + 0.5) / h, 0.5)));
     return out;
 }
 
@@ -87,7 +87,7 @@ inline std::vector<ray> rays_at_clusters(const std::vector<point>& centres, std:
     for (std::size_t k = 0; k < count; ++k) {
         const point target = k % 4 == 3 ? random.in_cube()
                                         : centres[k % centres.size()] + random.uniform(0, 0.06) * random.direction();
-        out.push_back(through(middle + 2.5 * random.direction(), target));
+        out.push_back(ray_through(middle + 2.5 * random.direction(), target));
     }
     return out;
 }

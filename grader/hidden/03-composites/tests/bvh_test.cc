@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bvh_scenes.hh"
+#include "composite_checks.hh"
 
 using vl::intersection;
 using vl::point;
@@ -42,7 +43,7 @@ std::vector<ray> mixed_rays(unsigned seed, int count) {
     static const vector axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (int k = 0; k < count; ++k) {
         switch (k % 4) {
-            case 0: out.push_back(through(middle + 2 * random.direction(), random.in_cube())); break;
+            case 0: out.push_back(ray_through(middle + 2 * random.direction(), random.in_cube())); break;
             case 1: out.push_back(ray(random.in_cube(), random.direction())); break;
             case 2: out.push_back(ray(random.in_cube(-0.2, 1.2), axes[random.below(6)])); break;
             default: {
@@ -177,17 +178,12 @@ TEST_CASE("bvh: a ray through the root box that hits nothing gets composite_only
     // A child that answers composite_only of itself: the BVH answers composite_only of itself.
     auto with_hollow = make_bvh();
     names.name(with_hollow.get(), "the BVH itself");
-    auto hollow = std::make_unique<probe_hollow>(point(0, 0, 0), point(1, 1, 1));
-    names.name(hollow.get(), "the hollow child (rule 2: the composite returns composite_only of itself)");
-    with_hollow->insert(std::move(hollow));
+    insert_hollow_child(names, *with_hollow);
     probe_set far;
     with_hollow->insert(far.add(std::make_unique<probe_sphere>(point(5, 5, 5), 0.5)));
-    const ray into_hollow(point(0.5, 0.5, -3), vector(0, 0, 1));
-    const intersection got = with_hollow->intersect(into_hollow);
-    t.check(got.is_composite_only() && got.object == with_hollow.get(), [&] {
-        return show(into_hollow) + " enters only a child that answers composite_only of itself: the BVH should return "
-               "composite_only of the BVH; yours returned " + show(got, names);
-    });
+    check_composite_only_of(t, names, *with_hollow, ray(point(0.5, 0.5, -3), vector(0, 0, 1)),
+                            " enters only a child that answers composite_only of itself: the BVH should return "
+                            "composite_only of the BVH");
     // A nested BVH entered for nothing.
     auto outer = make_bvh();
     names.name(outer.get(), "the outer BVH");
@@ -198,12 +194,9 @@ TEST_CASE("bvh: a ray through the root box that hits nothing gets composite_only
     inner->insert(nested.add(std::make_unique<probe_sphere>(point(2, 2, 0), 0.5)));
     outer->insert(std::move(inner));
     outer->insert(nested.add(std::make_unique<probe_sphere>(point(6, 0, 0), 0.5)));
-    const ray between(point(1, 1, -5), vector(0, 0, 1));
-    const intersection g2 = outer->intersect(between);
-    t.check(g2.is_composite_only() && g2.object == outer.get(), [&] {
-        return show(between) + " enters the box of a BVH inside a BVH but hits nothing: the outer BVH should return "
-               "composite_only of itself; yours returned " + show(g2, names);
-    });
+    check_composite_only_of(t, names, *outer, ray(point(1, 1, -5), vector(0, 0, 1)),
+                            " enters the box of a BVH inside a BVH but hits nothing: the outer BVH should return "
+                            "composite_only of itself");
     // An empty BVH is missed.
     auto empty = make_bvh();
     const intersection g3 = empty->intersect(ray(point(0, 0, 5), vector(0, 0, -1)));
@@ -486,20 +479,16 @@ TEST_CASE("bvh: min_point() and max_point() are the union of the children's boxe
     dice random(350);
     probe_set set;
     auto bvh = make_bvh();
-    rvec lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
+    box_union children;
     for (int k = 0; k < 50; ++k) {
         const point c = random.in_cube(-3, 2);
         const double r = random.uniform(0.01, 0.7);
         auto p = k % 2 == 0 ? std::unique_ptr<probe>(std::make_unique<probe_sphere>(c, r))
                             : std::unique_ptr<probe>(std::make_unique<probe_cuboid>(c, c + vector(r, 2 * r, 0.5 * r)));
-        const rvec a = to_r(p->min_point()), b = to_r(p->max_point());
-        lo = {std::min(lo.x, a.x), std::min(lo.y, a.y), std::min(lo.z, a.z)};
-        hi = {std::max(hi.x, b.x), std::max(hi.y, b.y), std::max(hi.z, b.z)};
+        children.add(*p);
         bvh->insert(std::move(p));
-        if (k == 0 || k == 7 || k == 49) {
-            check_point(t, "min_point() of the BVH of the first " + std::to_string(k + 1) + " children", bvh->min_point(), lo, 0);
-            check_point(t, "max_point() of the BVH of the first " + std::to_string(k + 1) + " children", bvh->max_point(), hi, 0);
-        }
+        if (k == 0 || k == 7 || k == 49)
+            check_box_is(t, *bvh, children, "the BVH of the first " + std::to_string(k + 1) + " children");
     }
     const auto empty = make_bvh();
     t.check(unknown(empty->min_point()) && unknown(empty->max_point()), [&] {
@@ -507,16 +496,7 @@ TEST_CASE("bvh: min_point() and max_point() are the union of the children's boxe
                show(empty->max_point());
     });
     auto small = make_bvh();
-    small->insert(std::make_unique<probe_sphere>(point(0, 0, 0), 1));
-    small->insert(std::make_unique<probe_sphere>(point(5, 0, 0), 1));
-    for (const auto& [p, want] : {std::pair{point(0.5, 0.2, 0), true}, std::pair{point(5, 0.9, 0), true},
-                                  std::pair{point(2.5, 0, 0), false}, std::pair{point(0, 0, 1.5), false}}) {
-        const bool got = small->contains(p);
-        t.check(got == want, [&, p = p, want = want] {
-            return "contains(" + show(p) + ") of a BVH of the unit spheres around (0, 0, 0) and (5, 0, 0) should be " +
-                   (want ? "true" : "false") + "; yours is " + (got ? "true" : "false");
-        });
-    }
+    check_contains_of_two_spheres(t, *small, "BVH");
     t.report();
 }
 
@@ -526,11 +506,7 @@ TEST_CASE("bvh: insert() refuses a child whose box is unknown and a null pointer
     auto bvh = make_bvh();
     probe_set set;
     bvh->insert(set.add(std::make_unique<probe_sphere>(point(0, 0, -5), 1)));
-    struct bad {
-        std::string what;
-        std::function<std::unique_ptr<rtab_component>()> make;
-    };
-    const bad children[] = {
+    check_insert_refuses(t, *bvh, "BVH", {
         {"a PLANE", [] { return vl::stage02::make_plane(point(0, 0, 0), vector(0, 1, 0)); }},
         {"an empty LIST", [] { return std::make_unique<vl::object_list>(); }},
         {"an object whose min_point() is NaN_point",
@@ -539,19 +515,15 @@ TEST_CASE("bvh: insert() refuses a child whose box is unknown and a null pointer
          [nan] { return std::make_unique<probe_boxless>(point(0, 0, 0), point(1, nan, 1)); }},
         {"an object whose box is infinite", [inf] { return std::make_unique<probe_boxless>(point(-inf, 0, 0), point(1, 1, 1)); }},
         {"a null pointer", [] { return std::unique_ptr<rtab_component>(); }},
-    };
-    for (const bad& b : children) {
-        std::string message;
-        const bool refused = throws_usage_error([&] { bvh->insert(b.make()); }, message);
-        t.check(refused, [&] { return "insert() of " + b.what + " into a BVH should throw vl::usage_error; " + message; });
-        if (refused && b.what == "a PLANE")
+    }, [&](const bad_child& b, const std::string& message) {
+        if (b.what == "a PLANE")
             t.check(message.find("PLANE") != std::string::npos && message.find("BVH") != std::string::npos &&
                         message.find("LIST") != std::string::npos,
                     [&] {
                         return "the refusal of a PLANE should name both types (BVH, PLANE) and say to put it beside the BVH in "
                                "a LIST; yours says: " + message;
                     });
-    }
+    });
     for (const int k : {0, -1, 65, 1000}) {
         std::string message;
         t.check(throws_usage_error([&] { make_bvh(k); }, message),
@@ -581,58 +553,41 @@ TEST_CASE("bvh: BVH { leaf_size K ... } is read from a scene file, and write() g
                 " id " + std::to_string(k) + " }\n";
     }
     text += "}";
-    for (int pass = 0; pass < 2; ++pass) {
-        const auto object = read_one(text);
-        const auto* bvh = dynamic_cast<const rtab_composite*>(object.get());
-        VL_REQUIRE(bvh != nullptr && object->type_name() == "BVH",
-                   "reading \"" << text << "\" should give a BVH; yours gave " << object->type_name());
-        probe_set set;
-        for (const auto& c : bvh->children())
-            if (const auto* p = dynamic_cast<const probe*>(c.get())) set.track(p);
-        t.check(set.all.size() == 30, [&] {
-            return "the BVH read from \"" + text + "\" should hold its 30 children; it holds " + std::to_string(set.all.size());
+    check_read_write_read(
+        t, text, "BVH", 30,
+        [&](const rtab_composite& bvh, const probe_set& set, int pass) {
+            sweep(t, pass == 0 ? "a BVH read from a scene file" : "a BVH read back from what write() wrote", bvh, set,
+                  mixed_rays(361, 200));
+            return true;
+        },
+        [&](const std::string& written) {
+            const std::vector<double> leaf = numbers_after(written, "leaf_size", 1);
+            t.check(written.rfind("BVH", 0) == 0 && leaf.size() == 1 && leaf[0] == 3, [&] {
+                return "write() of a BVH read with leaf_size 3 should start with \"BVH { leaf_size 3\"; yours wrote \"" +
+                       written.substr(0, 200) + "\"";
+            });
+            std::size_t at = 0;
+            for (int k = 0; k < 30; ++k) {
+                const std::string id = " id " + std::to_string(k) + " ";
+                const std::size_t found = written.find(id, at);
+                if (!t.check(found != std::string::npos, [&] {
+                        return "write() of a BVH should write every child in insertion order; child " + std::to_string(k) +
+                               " is missing or out of order in \"" + written.substr(0, 300) + "...\"";
+                    }))
+                    break;
+                at = found;
+            }
         });
-        sweep(t, pass == 0 ? "a BVH read from a scene file" : "a BVH read back from what write() wrote", *bvh, set,
-              mixed_rays(361, 200));
-        const std::string written = text_of(*object);
-        const std::vector<double> leaf = numbers_after(written, "leaf_size", 1);
-        t.check(written.rfind("BVH", 0) == 0 && leaf.size() == 1 && leaf[0] == 3, [&] {
-            return "write() of a BVH read with leaf_size 3 should start with \"BVH { leaf_size 3\"; yours wrote \"" +
-                   written.substr(0, 200) + "\"";
-        });
-        std::size_t at = 0;
-        for (int k = 0; k < 30; ++k) {
-            const std::string id = " id " + std::to_string(k) + " ";
-            const std::size_t found = written.find(id, at);
-            if (!t.check(found != std::string::npos, [&] {
-                    return "write() of a BVH should write every child in insertion order; child " + std::to_string(k) +
-                           " is missing or out of order in \"" + written.substr(0, 300) + "...\"";
-                }))
-                break;
-            at = found;
-        }
-        text = written;
-    }
     t.report();
 }
 
 TEST_CASE("bvh: a bad BVH in a scene file is refused at the place of the fault", "[03][bvh][scene_io][detail]") {
     tally t("bad BVH blocks");
-    const struct {
-        const char* text;
-        const char* where;
-    } bad[] = {{"BVH { leaf_size 0 SPHERE { } }", "hidden.ray_trace:1:17"},
-               {"BVH { leaf_size 65 }", "hidden.ray_trace:1:17"},
-               {"BVH { leaf_size 2.5 }", "hidden.ray_trace:1:17"},
-               {"BVH {\n  SPHERE { }\n  PLANE { }\n}", "hidden.ray_trace:3:3"},
-               {"BVH {\n  SPHERE { }\n  LIST { } }", "hidden.ray_trace:3:3"}};
-    for (const auto& c : bad) {
-        const std::string message = read_error(c.text);
-        t.check(message.find(c.where) != std::string::npos, [&] {
-            return std::string("reading \"") + c.text + "\" should fail with a vl::file_error at " + c.where + "; it gave: " +
-                   message;
-        });
-    }
+    check_refused(t, {{"BVH { leaf_size 0 SPHERE { } }", "hidden.ray_trace:1:17"},
+                      {"BVH { leaf_size 65 }", "hidden.ray_trace:1:17"},
+                      {"BVH { leaf_size 2.5 }", "hidden.ray_trace:1:17"},
+                      {"BVH {\n  SPHERE { }\n  PLANE { }\n}", "hidden.ray_trace:3:3"},
+                      {"BVH {\n  SPHERE { }\n  LIST { } }", "hidden.ray_trace:3:3"}});
     // A good one is read, with the default leaf_size 4.
     const auto good = read_one("BVH { SPHERE { center 0 0 -5 } SPHERE { center 3 0 -5 } }");
     const intersection got = good->intersect(ray(point(3, 0, 0), vector(0, 0, -1)));

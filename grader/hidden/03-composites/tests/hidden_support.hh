@@ -1,8 +1,10 @@
 #pragma once
 // Helpers shared by stage 03's hidden tests (grader only): probe children that compute
-// their own hits in long double and count their own tests, brute-force answer keys, a
-// tally that reports the first few failing inputs of a sweep, random scenes, and readers
-// for scene text.
+// their own hits in long double and count their own tests, brute-force answer keys, random
+// scenes, and readers for scene text. What the public tests have (ray_through(), random
+// numbers, reading scene text) comes from their helpers (assignments/02-sphere/tests/
+// test_support.hh), what every hidden suite has (the tally, long-double vectors,
+// surfaces) from grader/hidden/common.
 //
 // Every child a test puts into your composites is, wherever possible, a probe: a type
 // your code has never seen, reachable only through its counted intersect(). Each probe
@@ -30,9 +32,12 @@
 #include <utility>
 #include <vector>
 
+#include "02-sphere/tests/test_support.hh"
 #include "grading.hh"
+#include "long_double.hh"
 #include "stage_02.hh"
 #include "stage_03.hh"
+#include "surfaces.hh"
 #include "vl/bounds.hh"
 #include "vl/error.hh"
 #include "vl/object_list.hh"
@@ -43,38 +48,23 @@
 
 namespace vl::stage03::hidden {
 
+using grading::full_precision_surface;
 using grading::num;
+using grading::real;
+using grading::rvec;
 using grading::show;
-
-using real = long double;
+using grading::surface_of;
+using grading::surface_text;
+using grading::tally;
+using grading::to_point;
+using grading::to_r;
+using grading::to_vector;
+using stage02::testing::ray_through;
 
 // --- long-double vectors -----------------------------------------------------------------
 
-struct rvec {
-    real x = 0, y = 0, z = 0;
-};
-inline rvec to_r(const point& p) {
-    const point h = p.homogenized();
-    return {h.x, h.y, h.z};
-}
-inline rvec to_r(const vector& v) { return {v.x, v.y, v.z}; }
-inline rvec operator-(const rvec& a, const rvec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline rvec operator+(const rvec& a, const rvec& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-inline rvec operator*(real s, const rvec& a) { return {s * a.x, s * a.y, s * a.z}; }
-inline real dot(const rvec& a, const rvec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline rvec cross(const rvec& a, const rvec& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline real len(const rvec& a) { return std::sqrt(dot(a, a)); }
-inline rvec unit(const rvec& a) { return (1 / len(a)) * a; }
 inline real axis_of(const rvec& a, int k) { return k == 0 ? a.x : k == 1 ? a.y : a.z; }
 inline double axis_of(const point& a, int k) { return k == 0 ? a.x : k == 1 ? a.y : a.z; }
-inline point to_point(const rvec& a) {
-    return point(static_cast<double>(a.x), static_cast<double>(a.y), static_cast<double>(a.z));
-}
-inline vector to_vector(const rvec& a) {
-    return vector(static_cast<double>(a.x), static_cast<double>(a.y), static_cast<double>(a.z));
-}
 inline std::string show(const rvec& a) {
     return "(" + num(static_cast<double>(a.x)) + ", " + num(static_cast<double>(a.y)) + ", " +
            num(static_cast<double>(a.z)) + ")";
@@ -148,41 +138,6 @@ inline std::string show(const intersection& i, const namer& names) {
     return "a hit at t = " + num(i.t) + " on " + names(i.object);
 }
 
-/// Counts the inputs of a sweep and keeps the first three failures in words; report()
-/// fails the test once, with the count and those three.
-class tally {
-public:
-    explicit tally(std::string what) : what_(std::move(what)) {}
-
-    /// Records one input; when `ok` is false, `describe()` says what went wrong.
-    template <class Describe>
-    bool check(bool ok, Describe&& describe) {
-        ++tried_;
-        if (!ok) {
-            if (failed_ < 3) examples_.push_back(describe());
-            ++failed_;
-        }
-        return ok;
-    }
-    int failed() const { return failed_; }
-    int tried() const { return tried_; }
-
-    void report() const {
-        if (failed_ == 0) {
-            SUCCEED();
-            return;
-        }
-        for (const std::string& e : examples_) FAIL_CHECK(e);
-        FAIL_CHECK(what_ << ": " << failed_ << " of " << tried_ << " went wrong"
-                         << (failed_ > 3 ? " (the first 3 are above)" : " (above)"));
-    }
-
-private:
-    std::string what_;
-    std::vector<std::string> examples_;
-    int failed_ = 0, tried_ = 0;
-};
-
 /// Runs `f`; "" when it returned normally, else what it threw, in words.
 template <class F>
 std::string what_thrown(F&& f) {
@@ -221,24 +176,13 @@ bool throws_usage_error(F&& f, std::string& message) {
 
 // --- random inputs -----------------------------------------------------------------------
 
-/// The ray from `from` through `to`.
-inline ray through(const point& from, const point& to) { return ray(from, to - from); }
-
-/// Seeded random numbers.
-class dice {
+/// Seeded random numbers: the public tests' generator, with a whole number below `n` and
+/// a point in the cube [lo, hi]^3 (the unit cube unless a test says otherwise).
+class dice : public stage02::testing::random_numbers {
 public:
-    explicit dice(unsigned seed) : engine_(seed) {}
-    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
-    int below(int n) { return std::uniform_int_distribution<int>(0, n - 1)(engine_); }
-    point in_cube(double lo = 0, double hi = 1) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
-    vector direction() {
-        const double z = uniform(-1, 1), phi = uniform(0, 2 * std::numbers::pi);
-        const double s = std::sqrt(1 - z * z);
-        return {s * std::cos(phi), s * std::sin(phi), z};
-    }
-
-private:
-    std::mt19937_64 engine_;
+    explicit dice(unsigned seed) : random_numbers(seed) {}
+    int below(int n) { return std::uniform_int_distribution<int>(0, n - 1)(engine()); }
+    point in_cube(double lo = 0, double hi = 1) { return in_box(lo, hi); }
 };
 
 // --- probes ------------------------------------------------------------------------------
@@ -777,9 +721,7 @@ inline const registry& test_types() {
 
 /// Reads one object from `text` (as the file "hidden.ray_trace").
 inline std::unique_ptr<rtab_component> read_one(const std::string& text) {
-    scene_reader in(test_types());
-    in.open_text(text, "hidden.ray_trace");
-    return in.read_object();
+    return stage02::testing::read_object(text, "hidden.ray_trace", test_types());
 }
 
 /// Reads every object of `text` (as a scene's top level does, without the settings).
@@ -792,22 +734,16 @@ inline std::vector<std::unique_ptr<rtab_component>> read_all(const std::string& 
 }
 
 /// What write() writes.
-inline std::string text_of(const rtab_component& o) {
-    std::ostringstream s;
-    o.write(s);
-    return s.str();
-}
+inline std::string text_of(const rtab_component& o) { return stage02::testing::written(o); }
 
 /// The message of the vl::file_error that reading `text` throws, or what happened instead.
 inline std::string read_error(const std::string& text) {
-    try {
-        read_one(text);
-    } catch (const file_error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        return std::string("(not a vl::file_error: ") + e.what() + ")";
-    }
-    return "(no error: the object was read)";
+    return grading::file_error_of([&] { read_one(text); });
+}
+
+/// Checks that each of `blocks` is refused with a vl::file_error at its place.
+inline void check_refused(tally& t, std::initializer_list<grading::refused_block> blocks) {
+    grading::check_refused(t, [](const std::string& text) { return read_error(text); }, blocks);
 }
 
 /// The numbers that follow the first `key` in `text` (up to `count` of them), read by
@@ -836,52 +772,9 @@ inline std::vector<double> numbers_after(const std::string& text, const std::str
     return out;
 }
 
-/// The surface getters of an object, as a vl::surface.
-inline surface surface_of(const rtab_component& o) {
-    surface s;
-    s.clr = o.clr();
-    s.kdr = o.kdr();
-    s.ksr = o.ksr();
-    s.kdt = o.kdt();
-    s.kst = o.kst();
-    s.n = o.n();
-    s.ior = o.ior();
-    s.zero_t = o.zero_t();
-    return s;
-}
-
-/// A surface with every key set to a value that needs all 17 digits.
-inline surface full_precision_surface(double zero_t) {
-    surface s;
-    s.clr = color(0.1 + 1e-13, 1.0 / 3, 2.0 / 3 + 1e-12, 1.0 / 7);
-    s.kdr = 0.7 + 1e-14;
-    s.ksr = 1.0 / 3;
-    s.kdt = 1e-7 / 3;
-    s.kst = 0.2 + 3e-15;
-    s.n = 123456.789012345;
-    s.ior = 1.5 + 1e-13;
-    s.zero_t = zero_t;
-    return s;
-}
-
-/// The surface keys of `s` as scene text (every digit).
-inline std::string surface_text(const surface& s) {
-    return " color " + num(s.clr.r) + " " + num(s.clr.g) + " " + num(s.clr.b) + " " + num(s.clr.a) + " kdr " +
-           num(s.kdr) + " ksr " + num(s.ksr) + " kdt " + num(s.kdt) + " kst " + num(s.kst) + " n " + num(s.n) +
-           " ior " + num(s.ior) + " zero_t " + num(s.zero_t);
-}
-
 /// Compares each surface key of `got` with `want` exactly; a line per difference.
 inline void compare_surface(const surface& got, const surface& want, const std::string& who, tally& t) {
-    const std::pair<const char*, std::pair<double, double>> keys[] = {
-        {"color red", {got.clr.r, want.clr.r}},   {"color green", {got.clr.g, want.clr.g}},
-        {"color blue", {got.clr.b, want.clr.b}},  {"color alpha", {got.clr.a, want.clr.a}},
-        {"kdr", {got.kdr, want.kdr}},             {"ksr", {got.ksr, want.ksr}},
-        {"kdt", {got.kdt, want.kdt}},             {"kst", {got.kst, want.kst}},
-        {"n", {got.n, want.n}},                   {"ior", {got.ior, want.ior}},
-        {"zero_t", {got.zero_t, want.zero_t}},
-    };
-    for (const auto& [name, values] : keys)
+    for (const auto& [name, values] : grading::surface_keys(got, want))
         t.check(values.first == values.second, [&, name = name, values = values] {
             return who + " has " + name + " " + num(values.first) + "; it should be " + num(values.second);
         });

@@ -270,7 +270,7 @@ TEST_CASE("leaving: whether a ray is inside is asked of its origin, not of the p
         const bool from_inside = k % 2 == 1;
         if (from_inside) ball->hit_only_from_within = 0.7L;  // its own wall never blocks the light inside it
         const ray r = from_inside ? ray(c + 0.5 * random.direction(), random.direction())
-                                  : through(c + 4 * random.direction(), c + 0.8 * random.direction());
+                                  : ray_through(c + 4 * random.direction(), c + 0.8 * random.direction());
         const real hit = ball->exact_t(r);
         if (!(hit > 0)) continue;
         const rvec p = hit_point(r, hit), out = unit(p - ball->centre());

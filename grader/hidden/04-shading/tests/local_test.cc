@@ -95,13 +95,13 @@ TEST_CASE("local: a lone light straight above a plane gives kdr times the surfac
             for (const double h : {1.0, 4.0, 37.0}) {
                 const point p(x, 0, z);
                 const std::vector<color_point> lights{color_point(color(0.8, 1.0, 0.5), point(x, h, z))};
-                check_plane(t, through(point(x + 2, 3, z + 4), p), point(0, 0, 0), vector(0, 1, 0), s, vl::BLACK, lights,
+                check_plane(t, ray_through(point(x + 2, 3, z + 4), p), point(0, 0, 0), vector(0, 1, 0), s, vl::BLACK, lights,
                             1e-12L);
                 // The analytic value itself, N.L = 1: kdr * c * Lc.
                 world w;
                 w.plane(point(0, 0, 0), vector(0, 1, 0), s);
                 w.s.lights = lights;
-                const ray r = through(point(x - 1, 2, z + 1), p);
+                const ray r = ray_through(point(x - 1, 2, z + 1), p);
                 const rgb want{0.75L * 0.9L * 0.8L, 0.75L * 0.6L * 1.0L, 0.75L * 0.3L * 0.5L};
                 check_color(t,
                             show(r) + " hits the plane y = 0 (normal (0, 1, 0), " + words(s) + ") at " + show(p) +
@@ -123,7 +123,7 @@ TEST_CASE("local: diffuse light on a sphere follows Lambert's cosine law, kdr ma
         const point light = c + random.uniform(3, 20) * random.direction();
         const point target = c + 0.9 * radius * random.direction();
         const point eye = c + random.uniform(4, 15) * random.direction();
-        check_ball(t, through(eye, target), c, radius, s, vl::BLACK, {color_point(color(1, 0.75, 0.5), light)}, 1e-9L);
+        check_ball(t, ray_through(eye, target), c, radius, s, vl::BLACK, {color_point(color(1, 0.75, 0.5), light)}, 1e-9L);
     }
     t.report();
 }
@@ -135,9 +135,9 @@ TEST_CASE("local: with no light a surface shows ambient times its colour times k
                                 make_surface(color(0.2, 0.9, 0.4), 0.35)};
     for (const color& a : ambients)
         for (const surface& s : surfaces) {
-            check_plane(t, through(point(1, 2, 3), point(0.25, 0, -0.5)), point(0, 0, 0), vector(0, 1, 0), s, a, {},
+            check_plane(t, ray_through(point(1, 2, 3), point(0.25, 0, -0.5)), point(0, 0, 0), vector(0, 1, 0), s, a, {},
                         1e-12L);
-            check_ball(t, through(point(0, 0, 6), point(0.3, 0.2, 0)), point(0, 0, 0), 1, s, a, {}, 1e-12L);
+            check_ball(t, ray_through(point(0, 0, 6), point(0.3, 0.2, 0)), point(0, 0, 0), 1, s, a, {}, 1e-12L);
         }
     t.report();
 }
@@ -150,9 +150,9 @@ TEST_CASE("local: the light's colour is filtered by the surface colour channel b
     for (const color& lc : lights)
         for (const color& c : colours) {
             // Diffuse alone, then a highlight alone (the light in the mirror direction of the eye).
-            check_plane(t, through(point(-2, 3, 0), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0),
+            check_plane(t, ray_through(point(-2, 3, 0), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0),
                         make_surface(c, 0.9), vl::BLACK, {color_point(lc, point(1, 2, 1))}, 1e-12L);
-            check_plane(t, through(point(-2, 3, 0), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0),
+            check_plane(t, ray_through(point(-2, 3, 0), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0),
                         make_surface(c, 0, 0.7, 0, 15), vl::BLACK, {color_point(lc, point(4, 6, 0))}, 1e-12L);
         }
     t.report();
@@ -169,7 +169,7 @@ TEST_CASE("local: the highlight is ksr times the cosine of the half angle to the
         const rvec l{std::sin(a + b), std::cos(a + b), 0}, v{std::sin(a - b), std::cos(a - b), 0};
         const point p(0.5, 0, -0.25);
         const point light = to_point(to_r(p) + 5.0L * l), eye = to_point(to_r(p) + 3.0L * v);
-        check_plane(t, through(eye, p), point(0, 0, 0), vector(0, 1, 0), s, vl::BLACK,
+        check_plane(t, ray_through(eye, p), point(0, 0, 0), vector(0, 1, 0), s, vl::BLACK,
                     {color_point(color(0.9, 0.9, 1), light)}, 1e-10L,
                     " (the half angle is " + num(static_cast<double>(alpha_deg)) + " degrees: the highlight is ksr cos(" +
                         num(static_cast<double>(alpha_deg)) + " degrees)^n c Lc)");
@@ -185,7 +185,7 @@ TEST_CASE("local: the highlight narrows as n grows: n = 1, 10, 100 and 1000 at t
             const real a = radians(alpha_deg), b = radians(20.0L);
             const rvec l{0, std::cos(a + b), std::sin(a + b)}, v{0, std::cos(a - b), std::sin(a - b)};
             const point p(0, 0, 0);
-            check_plane(t, through(to_point(3.0L * v), p), p, vector(0, 1, 0), make_surface(color(1, 1, 1), 0, 0.6, 0, n),
+            check_plane(t, ray_through(to_point(3.0L * v), p), p, vector(0, 1, 0), make_surface(color(1, 1, 1), 0, 0.6, 0, n),
                         vl::BLACK, {color_point(color(1, 1, 1), to_point(4.0L * l))}, 1e-10L);
         }
     t.report();
@@ -200,10 +200,10 @@ TEST_CASE("local: a light behind the surface adds neither diffuse light nor a hi
     const point p(0, 0, 0);
     for (const point light : {point(5, -0.5, 0), point(3, -0.2, 1), point(0, -3, 0), point(-4, -1, 2)})
         for (const point eye : {point(-1, 4, 0), point(-3, 0.8, 0.5)})
-            check_plane(t, through(eye, p), p, vector(0, 1, 0), s, color(0.1, 0.2, 0.3),
+            check_plane(t, ray_through(eye, p), p, vector(0, 1, 0), s, color(0.1, 0.2, 0.3),
                         {color_point(color(1, 1, 1), light)}, 1e-12L, " (the light is below the plane: ambient only)");
     // A sphere lit from one side, seen from the other.
-    check_ball(t, through(point(0, 0, 5), point(0, 0, 0)), point(0, 0, 0), 1, s, color(0.2, 0.2, 0.2),
+    check_ball(t, ray_through(point(0, 0, 5), point(0, 0, 0)), point(0, 0, 0), 1, s, color(0.2, 0.2, 0.2),
                {color_point(color(1, 1, 1), point(0, 0, -5))}, 1e-12L);
     t.report();
 }
@@ -217,9 +217,9 @@ TEST_CASE("local: a flat object seen from the side its normal points away from i
     const surface s = make_surface(color(0.6, 0.8, 1), 0.8, 0.3, 0, 8);
     const point p(0.5, 0, 0.5);
     for (const point eye : {point(0, -3, 1), point(2, -1, -2)}) {
-        check_plane(t, through(eye, p), point(0, 0, 0), vector(0, 1, 0), s, color(0.1, 0.1, 0.1),
+        check_plane(t, ray_through(eye, p), point(0, 0, 0), vector(0, 1, 0), s, color(0.1, 0.1, 0.1),
                     {color_point(color(1, 1, 1), point(1.5, 3, 0.2))}, 1e-12L, " (the light is on the normal's side: it lights the sheet)");
-        check_plane(t, through(eye, p), point(0, 0, 0), vector(0, 1, 0), s, color(0.1, 0.1, 0.1),
+        check_plane(t, ray_through(eye, p), point(0, 0, 0), vector(0, 1, 0), s, color(0.1, 0.1, 0.1),
                     {color_point(color(1, 1, 1), point(1, -3, 0))}, 1e-12L, " (the light is on the eye's side, behind the normal: ambient only)");
     }
     t.report();
@@ -228,9 +228,9 @@ TEST_CASE("local: a flat object seen from the side its normal points away from i
 TEST_CASE("local: trace() does not clamp, so bright lights give values above 1", "[04][local]") {
     tally t("bright lights");
     const surface s = make_surface(color(1, 0.5, 1), 0.9, 0.8, 0, 4);
-    check_plane(t, through(point(-1, 2, 0), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, color(2, 2, 2),
+    check_plane(t, ray_through(point(-1, 2, 0), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, color(2, 2, 2),
                 {color_point(color(5, 3, 4), point(1, 2, 0))}, 1e-11L);
-    check_plane(t, through(point(0, 3, 3), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, vl::BLACK,
+    check_plane(t, ray_through(point(0, 3, 3), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, vl::BLACK,
                 {color_point(color(2, 2, 2), point(0, 5, 0)), color_point(color(3, 1, 2), point(0, 3, -3))}, 1e-11L);
     t.report();
 }
@@ -276,7 +276,7 @@ TEST_CASE("local: lights do not fade with distance", "[04][local][detail]") {
     tally t("near and far lights");
     const surface s = make_surface(color(0.5, 0.7, 0.9), 0.8);
     for (const double h : {0.5, 10.0, 1000.0, 1e5})
-        check_plane(t, through(point(1, 1, 1), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, vl::BLACK,
+        check_plane(t, ray_through(point(1, 1, 1), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, vl::BLACK,
                     {color_point(color(1, 1, 1), point(h * 0.6, h * 0.8, 0))}, 1e-12L,
                     " (the same direction to the light at any distance: the same colour)");
     t.report();
@@ -291,7 +291,7 @@ TEST_CASE("local: several lights add up, each with its own direction and colour"
             lights.emplace_back(color(random.uniform(0, 1), random.uniform(0, 1), random.uniform(0, 1)),
                                 point(random.uniform(-6, 6), random.uniform(0.5, 8), random.uniform(-6, 6)));
         const point target(random.uniform(-1, 1), 0, random.uniform(-1, 1));
-        check_plane(t, through(point(random.uniform(-3, 3), 4, 5), target), point(0, 0, 0), vector(0, 1, 0),
+        check_plane(t, ray_through(point(random.uniform(-3, 3), 4, 5), target), point(0, 0, 0), vector(0, 1, 0),
                     make_surface(color(0.9, 0.5, 0.7), 0.6, 0.4, 0, 12), color(0.05, 0.1, 0.05), lights, 1e-10L);
     }
     t.report();
@@ -302,7 +302,7 @@ TEST_CASE("local: kdt, diffuse transmission, is not part of the model and change
     for (const double kdt : {0.0, 0.5, 1.0}) {
         surface s = make_surface(color(0.8, 0.6, 0.4), 0.7, 0.2, 0, 10);
         s.kdt = kdt;
-        check_plane(t, through(point(0, 2, 2), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, color(0.1, 0.1, 0.1),
+        check_plane(t, ray_through(point(0, 2, 2), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, color(0.1, 0.1, 0.1),
                     {color_point(color(1, 1, 1), point(1, 3, -1)), color_point(color(1, 1, 1), point(0, -3, 0))}, 1e-12L,
                     " (kdt " + num(kdt) + " is not read)");
     }

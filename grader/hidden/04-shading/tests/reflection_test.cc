@@ -138,7 +138,7 @@ TEST_CASE("reflection: the reflected ray leaves a mirror plane in the mirror dir
         const probe_watcher* watch = w.watcher();
         const point eye = at + random.uniform(1, 6) * (n + 0.9 * random.direction()).unit();
         const point target = at + random.uniform(0, 2) * (random.direction() - (random.direction() * n) * n);
-        const ray r = through(eye, target);
+        const ray r = ray_through(eye, target);
         const real hit = sheet->exact_t(r);
         if (!(hit > 0) || dot(unit(to_r(r.direction())), sheet->unit_normal()) > -0.05L) continue;
         const traced got = trace_in(w.s, r, 1);
@@ -164,7 +164,7 @@ TEST_CASE("reflection: the reflected ray leaves a mirror sphere in the mirror di
         const double radius = random.uniform(0.5, 2);
         const probe_ball* ball = w.ball(c, radius, make_surface(color(1, 1, 1), 0, 0.8));
         const probe_watcher* watch = w.watcher();
-        const ray r = through(c + random.uniform(3, 9) * random.direction(), c + 0.95 * radius * random.direction());
+        const ray r = ray_through(c + random.uniform(3, 9) * random.direction(), c + 0.95 * radius * random.direction());
         const real hit = ball->exact_t(r);
         if (!(hit > 0)) continue;
         const rvec p = hit_point(r, hit), d = unit(to_r(r.direction())), n = unit(p - ball->centre());
@@ -192,7 +192,7 @@ TEST_CASE("reflection: a mirror of weight ksr and colour c shows ksr * c times t
             const surface s = make_surface(c, 0, ksr);
             vl::primitive* mirror = w.plane(point(0, 0, 0), vector(0, 1, 0), s);
             w.plane(point(0, 3, 0), vector(0, -1, 0), emitter(emitted));
-            const ray r = through(point(-1, 1, 0.5), point(0.5, 0, 0));
+            const ray r = ray_through(point(-1, 1, 0.5), point(0.5, 0, 0));
             check_reflected(t, w, *mirror, r, 1, w, ray(point(2, 1, 0), vector(0, 1, 0)),
                             show(r) + " at depth 1 hits the mirror y = 0 (" + words(s) +
                                 ") and its reflection reaches the ceiling y = 3, an emitter of colour " + show(emitted) +
@@ -209,7 +209,7 @@ TEST_CASE("reflection: at depth 0 a mirror shows no reflection, at depth 1 it do
     w.emitters_shine();
     vl::primitive* mirror = w.plane(point(0, 0, 0), vector(0, 1, 0), s);
     w.plane(point(0, 3, 0), vector(0, -1, 0), emitter(emitted));
-    const ray r = through(point(0, 1, 1), point(0, 0, 0));
+    const ray r = ray_through(point(0, 1, 1), point(0, 0, 0));
     // At depth 0 the mirror shows what it shows with ksr 0: its own light alone.
     const bounced none = bounce_part(w.s, *mirror, r, 0);
     t.check(none.ok() && same(none.part, rgb{}, 1e-12L), [&] {
@@ -266,7 +266,7 @@ TEST_CASE("reflection: a reflected ray that hits nothing brings back the backgro
     const surface s = make_surface(color(1, 0.5, 0.75), 0, 0.9);
     vl::primitive* mirror = w.plane(point(0, 0, 0), vector(0, 1, 0), s);
     for (const point eye : {point(0, 1, 3), point(2, 5, 0)}) {
-        const ray r = through(eye, point(0, 0, 0));
+        const ray r = ray_through(eye, point(0, 0, 0));
         check_reflected(t, w, *mirror, r, 3, w, ray(point(0, 1, 0), vector(0.1, 1, 0.2)),
                         show(r) + " at depth 3 hits a mirror floor (" + words(s) +
                             "); its reflection hits nothing: the reflection adds ksr * c * background");
@@ -285,7 +285,7 @@ TEST_CASE("reflection: a curved mirror in a room of coloured walls shows the wal
         add_walls(w);
         const point c(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
         probe_ball* ball = w.ball(c, 1.5, s);
-        const ray r = through(c + random.uniform(2, 3.2) * random.direction(), c + 1.4 * random.direction());
+        const ray r = ray_through(c + random.uniform(2, 3.2) * random.direction(), c + 1.4 * random.direction());
         const real hit = ball->exact_t(r);
         if (!(hit > 0)) continue;
         const rvec p = hit_point(r, hit), d = unit(to_r(r.direction())), n = unit(p - ball->centre()), m = mirror(d, n);
@@ -310,7 +310,7 @@ TEST_CASE("reflection: a surface with both kdr and ksr adds its reflection to it
     w.emitters_shine();
     vl::primitive* mirror = w.plane(point(0, 0, 0), vector(0, 1, 0), s);
     w.plane(point(0, 2, 0), vector(0, -1, 0), emitter(emitted));
-    const ray r = through(point(1, 1, 1), point(0, 0, 0));
+    const ray r = ray_through(point(1, 1, 1), point(0, 0, 0));
     check_reflected(t, w, *mirror, r, 2, w, ray(point(0, 1, 0), vector(0, 1, 0)),
                     show(r) + " at depth 2 hits a floor (" + words(s) + ") under a ceiling showing " + show(emitted) +
                         ": its own light plus the reflection, ksr * c * " + show(emitted));
@@ -326,7 +326,7 @@ TEST_CASE("reflection: the reflected ray starts at the hit point on the side the
         const point c(random.uniform(-50, 50), random.uniform(-50, 50), random.uniform(-50, 50));
         const probe_ball* ball = w.ball(c, 2, make_surface(color(1, 1, 1), 0, 1));
         const probe_watcher* watch = w.watcher();
-        const ray r = through(c + 6 * random.direction(), c + 1.5 * random.direction());
+        const ray r = ray_through(c + 6 * random.direction(), c + 1.5 * random.direction());
         const real hit = ball->exact_t(r);
         if (!(hit > 0)) continue;
         const rvec p = hit_point(r, hit), d = unit(to_r(r.direction())), n = unit(p - ball->centre());
@@ -344,7 +344,7 @@ TEST_CASE("reflection: at depth 0 glass shows neither reflection nor transmissio
         const surface s = make_surface(color(0.5, 0.75, 1), kdr, 0.1, 0.9, 1, 1.5);
         bench b(s, false);
         b.red_green();
-        const ray r = through(point(0.5, 1, 0), point(0, 0, 0));
+        const ray r = ray_through(point(0.5, 1, 0), point(0, 0, 0));
         const bounced none = b.bounces(r, 0);
         t.check(none.ok() && same(none.part, rgb{}, 1e-12L), [&] {
             return "at depth 0 the bounces should add nothing, (0, 0, 0); they added " + none.words() +

@@ -115,7 +115,7 @@ TEST_CASE("refraction: the transmitted ray entering a glass sphere follows Snell
         probe_ball* ball = w.ball(c, random.uniform(0.5, 2), glass(ior));
         ball->enter_only = true;  // the transmitted ray passes out unhindered
         const probe_watcher* watch = w.watcher();
-        const ray r = through(c + random.uniform(4, 10) * random.direction(), c + 0.9 * ball->radius() * random.direction());
+        const ray r = ray_through(c + random.uniform(4, 10) * random.direction(), c + 0.9 * ball->radius() * random.direction());
         const real hit = ball->exact_t(r);
         if (!(hit > 0)) continue;
         const rvec p = hit_point(r, hit), d = unit(to_r(r.direction())), n = unit(p - ball->centre());
@@ -264,7 +264,7 @@ TEST_CASE("robust: the transmitted ray starts just inside the object it enters",
         probe_ball* ball = w.ball(c, 3, glass(1.5));
         ball->enter_only = true;  // the transmitted ray passes out unhindered
         const probe_watcher* watch = w.watcher();
-        const ray r = through(c + 10 * random.direction(), c + 0.8 * random.direction());
+        const ray r = ray_through(c + 10 * random.direction(), c + 0.8 * random.direction());
         const real hit = ball->exact_t(r);
         if (!(hit > 0)) continue;
         const rvec p = hit_point(r, hit), d = unit(to_r(r.direction())), n = unit(p - ball->centre());

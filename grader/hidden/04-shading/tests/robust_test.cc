@@ -78,7 +78,7 @@ std::vector<ray> grid_rays(const vector& o, int n) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
             const point target = point(-3 + 6.0 * (i + 0.5) / n, 2.5 - 3.5 * (j + 0.5) / n, 0) + o;
-            out.push_back(through(eye, target));
+            out.push_back(ray_through(eye, target));
         }
     return out;
 }

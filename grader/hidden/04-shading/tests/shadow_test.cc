@@ -79,7 +79,7 @@ TEST_CASE("shadow: a point behind a blocker gets the ambient light only", "[04][
     for (const double x : {0.0, 0.5, -0.8, 1.2})
         for (const double z : {0.0, 0.6, -1.1}) {
             const point p(x, 0, z);
-            check_floor(t, w, through(point(x + 6, 1, z + 1), p), {false}, "the sphere around (0, 3, 0) of radius 1 lies between");
+            check_floor(t, w, ray_through(point(x + 6, 1, z + 1), p), {false}, "the sphere around (0, 3, 0) of radius 1 lies between");
         }
     // And a highlight is shadowed as well.
     const surface shiny = make_surface(color(0.8, 0.6, 0.4), 0, 0.9, 0, 3);
@@ -87,7 +87,7 @@ TEST_CASE("shadow: a point behind a blocker gets the ambient light only", "[04][
     // (The blocker is black: the floor's mirror direction meets it too, and a black object
     // shows nothing there even to a tracer that would reflect at depth 0.)
     w2.ball(point(1, 1, 0), 0.3, make_surface(color(0, 0, 0), 1));
-    check_floor(t, w2, through(point(-2, 2, 0), point(0, 0, 0)), {false},
+    check_floor(t, w2, ray_through(point(-2, 2, 0), point(0, 0, 0)), {false},
                 "the sphere around (1, 1, 0) of radius 0.3 hides the light that would give a full highlight", shiny);
     t.report();
 }
@@ -102,7 +102,7 @@ TEST_CASE("shadow: objects beyond the light, on the line to it or beside it, cas
     for (const double x : {0.0, 0.3, -0.4, 1.0})
         for (const double z : {0.0, -0.3, 0.5}) {
             const point p(x, 0, z);
-            check_floor(t, w, through(point(x + 5, 1, z), p), {true},
+            check_floor(t, w, ray_through(point(x + 5, 1, z), p), {true},
                         "the spheres around (0, 4, 0), (0.5, 2.5, 0.2) and the ceiling y = 8 are all beyond the light");
         }
     t.report();
@@ -115,7 +115,7 @@ TEST_CASE("shadow: a shadow ray for which the root answers composite_only is not
     w.plane(point(0, 0, 0), vector(0, 1, 0), floor_surface);
     w.light(color(1, 1, 1), point(1, 5, 2));
     for (const point p : {point(0, 0, 0), point(1, 0, 1), point(-2, 0, 0.5)})
-        check_floor(t, w, through(point(4, 3, 4), p), {true},
+        check_floor(t, w, ray_through(point(4, 3, 4), p), {true},
                     "the scene's root answers composite_only (t = 0) for the shadow ray: that is not a hit");
     t.report();
 }
@@ -127,9 +127,9 @@ TEST_CASE("shadow: with several lights each is shadowed on its own", "[04][shado
     w.light(color(0.25, 0.5, 1), point(4, 4, 0));
     w.ball(point(-2, 2, 0), 0.5, make_surface(color(1, 1, 1), 1));  // blocks the first light from (0, 0, 0)
     w.ball(point(3, 2, 1), 0.5, make_surface(color(1, 1, 1), 1));   // blocks the second light from (2, 0, 2)
-    check_floor(t, w, through(point(0, 1, 5), point(0, 0, 0)), {false, true}, "the sphere around (-2, 2, 0) blocks the first light");
-    check_floor(t, w, through(point(2, 1, 6), point(2, 0, 2)), {true, false}, "the sphere around (3, 2, 1) blocks the second light");
-    check_floor(t, w, through(point(0, 1, -6), point(0, 0, -3)), {true, true}, "nothing blocks either light");
+    check_floor(t, w, ray_through(point(0, 1, 5), point(0, 0, 0)), {false, true}, "the sphere around (-2, 2, 0) blocks the first light");
+    check_floor(t, w, ray_through(point(2, 1, 6), point(2, 0, 2)), {true, false}, "the sphere around (3, 2, 1) blocks the second light");
+    check_floor(t, w, ray_through(point(0, 1, -6), point(0, 0, -3)), {true, true}, "nothing blocks either light");
     t.report();
 }
 
@@ -140,7 +140,7 @@ TEST_CASE("shadow: transparent and mirror objects block the light too", "[04][sh
         world w = floor_world();
         w.light(color(1, 1, 1), point(0, 5, 0));
         w.ball(point(0, 2.5, 0), 0.8, s);
-        check_floor(t, w, through(point(5, 0.5, 0), point(0.2, 0, 0.1)), {false},
+        check_floor(t, w, ray_through(point(5, 0.5, 0), point(0.2, 0, 0.1)), {false},
                     "the sphere around (0, 2.5, 0) with " + words(s) + " lies between: every object blocks");
     }
     t.report();
@@ -153,12 +153,12 @@ TEST_CASE("shadow: a blocker just before the light blocks it and one just beyond
         world before = floor_world();
         before.light(color(1, 1, 1), light);
         before.ball(point(0, 3 - gap - 0.2, 0), 0.2, make_surface(color(1, 1, 1), 1));  // its top gap below the light
-        check_floor(t, before, through(point(3, 1, 0), point(0, 0, 0)), {false},
+        check_floor(t, before, ray_through(point(3, 1, 0), point(0, 0, 0)), {false},
                     "a sphere of radius 0.2 whose top is " + num(gap) + " below the light is in the way");
         world beyond = floor_world();
         beyond.light(color(1, 1, 1), light);
         beyond.ball(point(0, 3 + gap + 0.2, 0), 0.2, make_surface(color(1, 1, 1), 1));  // its bottom gap above it
-        check_floor(t, beyond, through(point(3, 1, 0), point(0, 0, 0)), {true},
+        check_floor(t, beyond, ray_through(point(3, 1, 0), point(0, 0, 0)), {true},
                     "a sphere of radius 0.2 whose bottom is " + num(gap) + " above the light is beyond it");
     }
     t.report();
@@ -170,7 +170,7 @@ TEST_CASE("shadow: the shadow ray reaches as far as the light, however far it is
         world w = floor_world();
         w.light(color(1, 1, 1), point(0, h, 0));
         w.ball(point(0, h / 2, 0), h / 20, make_surface(color(1, 1, 1), 1));
-        check_floor(t, w, through(point(3, 1, 0), point(0, 0, 0)), {false},
+        check_floor(t, w, ray_through(point(3, 1, 0), point(0, 0, 0)), {false},
                     "the light is at height " + num(h) + ", a sphere of radius " + num(h / 20) + " halfway up blocks it");
     }
     t.report();
@@ -182,7 +182,7 @@ TEST_CASE("shadow: a small blocker close above the surface still casts its shado
         world w = floor_world();
         w.light(color(1, 1, 1), point(0, 4, 0));
         w.ball(point(0, 2 * h, 0), h, make_surface(color(1, 1, 1), 1));
-        check_floor(t, w, through(point(3, 1, 0.5), point(0, 0, 0)), {false},
+        check_floor(t, w, ray_through(point(3, 1, 0.5), point(0, 0, 0)), {false},
                     "a sphere of radius " + num(h) + " lies " + num(h) + " above the point, under the light");
     }
     t.report();

@@ -124,7 +124,7 @@ TEST_CASE("sweep: no acne on lit planes and spheres with zero_t 0 from 1 to 1e8 
                 }
                 what += " (color (0.9, 0.8, 0.7), kdr 0.7, ksr 0.3, n 10, zero_t 0) under a white light at " +
                         show(light) + ", the only object";
-                const ray primary = through(to_point(eye), to_point(target));
+                const ray primary = ray_through(to_point(eye), to_point(target));
                 const traced lit = trace_in(w.s, primary, 1);
                 const std::vector<std::pair<ray, real>> seen = hits();
                 w.s.lights.clear();
