@@ -64,6 +64,25 @@ inline sphere_roots roots_in_long_double(const point& center, double radius, con
     return {true, t1, t2};
 }
 
+/// \brief What the later stages' test spheres share: the ball of `center_` and `radius_`,
+/// its outward normal, its box and its inside (strictly). `Base` is the interface the
+/// sphere implements (vl::rtab_component, or vl::primitive for one with a surface); a
+/// test sphere adds its hits, computed with roots_in_long_double().
+template <class Base>
+class test_ball : public Base {
+public:
+    vector normal(const point& p) const override { return (p.homogenized() - center_).unit(); }
+    point min_point() const override { return center_ - vector(radius_, radius_, radius_); }
+    point max_point() const override { return center_ + vector(radius_, radius_, radius_); }
+    bool contains(const point& p) const override { return (p.homogenized() - center_).length() < radius_; }
+
+protected:
+    test_ball(const point& center, double radius) : center_(center), radius_(radius) {}
+
+    point center_;
+    double radius_;
+};
+
 /// True when `r` passes within `radius` of `center` ahead of its origin (or starts within
 /// it): what the tests' own bounded composites answer composite_only for.
 inline bool passes_within(const ray& r, const point& center, double radius) {

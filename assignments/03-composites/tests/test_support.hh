@@ -61,9 +61,9 @@ inline vector perpendicular(const vector& d) {
 /// \brief A sphere the tests put into your composites. Its hits are computed in long
 /// double, it knows its box, normal and inside, and it counts its own intersect() calls.
 /// `id` tells the spheres of a test apart (and a copy of a sphere from the original).
-class test_sphere final : public rtab_component {
+class test_sphere final : public stage02::testing::test_ball<rtab_component> {
 public:
-    test_sphere(const point& center, double radius, int id = 0) : center_(center), radius_(radius), id_(id) {}
+    test_sphere(const point& center, double radius, int id = 0) : test_ball(center, radius), id_(id) {}
 
     std::string type_name() const override { return "TEST_SPHERE"; }
     int id() const { return id_; }
@@ -71,11 +71,6 @@ public:
     double radius() const { return radius_; }
     /// How many times a ray was intersected with this sphere.
     std::uint64_t calls() const { return calls_; }
-
-    vector normal(const point& p) const override { return (p.homogenized() - center_).unit(); }
-    point min_point() const override { return center_ - vector(radius_, radius_, radius_); }
-    point max_point() const override { return center_ + vector(radius_, radius_, radius_); }
-    bool contains(const point& p) const override { return (p.homogenized() - center_).length() < radius_; }
 
 private:
     intersection find_intersection(const ray& r) const override {
@@ -88,8 +83,6 @@ private:
         return intersection::none();
     }
 
-    point center_;
-    double radius_;
     int id_;
     mutable std::uint64_t calls_ = 0;
 };

@@ -132,18 +132,14 @@ inline double fresnel_exact(double eta1, double eta2, double cos_i) {
 /// With `open_towards` not zero it is a bowl: the half of the surface on that side of the
 /// centre is left out (no hits there), while contains() is still true in the whole ball.
 /// A test uses it to look at the inside of a sphere along a path that meets nothing else.
-class test_sphere final : public primitive {
+class test_sphere final : public stage02::testing::test_ball<primitive> {
 public:
     test_sphere(const point& center, double radius, const surface& looks = {},
                 const vector& open_towards = vector(0, 0, 0))
-        : center_(center), radius_(radius), open_(open_towards) {
+        : test_ball(center, radius), open_(open_towards) {
         set_surface(looks);
     }
     std::string type_name() const override { return "TEST_SPHERE"; }
-    vector normal(const point& p) const override { return (p.homogenized() - center_).unit(); }
-    point min_point() const override { return center_ - vector(radius_, radius_, radius_); }
-    point max_point() const override { return center_ + vector(radius_, radius_, radius_); }
-    bool contains(const point& p) const override { return (p.homogenized() - center_).length() < radius_; }
 
 private:
     intersection find_intersection(const ray& r) const override {
@@ -161,8 +157,6 @@ private:
         return intersection::none();
     }
 
-    point center_;
-    double radius_;
     vector open_;
 };
 
