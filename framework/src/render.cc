@@ -104,13 +104,21 @@ render_stats render(const scene& s, const registry& types, vfb& out, const rende
                 rays += static_cast<std::uint64_t>(t.x1 - t.x0) * static_cast<std::uint64_t>(t.y1 - t.y0) *
                         static_cast<std::uint64_t>(spp);
                 if (options.on_tile) options.on_tile(t.x0, t.y0, t.x1, t.y1);
-                ++tiles_done;
-                finished.notify_one();
+                // Only the last tile wakes the waiting thread (a wake-up per tile was a system
+                // call per tile); it shows the progress on its own every 100 ms. Taking the
+                // mutex first means the wake-up cannot fall between its check and its wait.
+                if (++tiles_done == tiles.size()) {
+                    { const std::lock_guard lock(mutex); }
+                    finished.notify_one();
+                }
             }
         } catch (...) {
-            const std::lock_guard lock(mutex);
-            if (!error) error = std::current_exception();
-            next_tile = tiles.size();  // stop the others
+            {
+                const std::lock_guard lock(mutex);
+                if (!error) error = std::current_exception();
+                next_tile = tiles.size();  // stop the others
+            }
+            finished.notify_one();
         }
         const std::lock_guard lock(mutex);
         stats.counts += counts() - start;

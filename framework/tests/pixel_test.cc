@@ -5,6 +5,8 @@
 #include "vl/catch.hh"
 
 #include <cmath>
+#include <iomanip>
+#include <vector>
 
 using namespace vl;
 
@@ -38,6 +40,36 @@ TEST_CASE("srgb: the 8-bit tables agree with the formula for every code", "[pixe
     }
     for (double x = 0; x <= 1.0; x += 0.0013)
         CHECK(linear_to_srgb8(x) == static_cast<int>(std::lround(255 * linear_to_srgb(x))));
+}
+
+TEST_CASE("srgb: linear_to_srgb8 changes code exactly at each decision point, and nowhere else", "[pixel][srgb]") {
+    // Code k + 1 starts at the linear value of code k + 0.5. The nearest code of x is the
+    // number of those decision points at or below it, counted here one by one.
+    std::vector<double> decisions;
+    for (int k = 0; k < 255; ++k) decisions.push_back(srgb_to_linear((k + 0.5) / 255.0));
+    const auto nearest = [&](double x) {
+        int code = 0;
+        for (const double d : decisions) code += d <= x;
+        return code;
+    };
+    std::vector<double> probes = {1e-300, 4.9e-324, 0.5, 1.0, 1.0000000000000002, 2.0, 1e300};
+    for (const double d : decisions) probes.push_back(d);
+    for (int b = 0; b <= 8192; ++b) probes.push_back(b / 8192.0);  // the edges of any table of up to 8192 pieces
+    std::size_t mismatches = 0;
+    for (const double p : probes) {
+        double below = p, above = p;
+        for (int step = 0; step < 3; ++step) {
+            for (const double x : {below, above})
+                if (x >= 0 && linear_to_srgb8(x) != nearest(x)) {
+                    ++mismatches;
+                    UNSCOPED_INFO("linear_to_srgb8(" << std::setprecision(17) << x << ") = " << int(linear_to_srgb8(x))
+                                                     << ", the nearest code is " << nearest(x));
+                }
+            below = std::nextafter(below, 0.0);
+            above = std::nextafter(above, 2.0);
+        }
+    }
+    CHECK(mismatches == 0);
 }
 
 TEST_CASE("vfb_pixel: each thesis constructor builds the pixel it names", "[pixel]") {

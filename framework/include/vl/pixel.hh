@@ -45,7 +45,8 @@ double linear_to_srgb(double linear);
 /// sRGB encoding in [0, 1] to linear light in [0, 1] (values outside are clamped).
 double srgb_to_linear(double encoded);
 /// Linear light to the nearest 8-bit sRGB code, exactly `round(255 * linear_to_srgb(x))`,
-/// found by binary search in a table of the 255 decision points (no `pow` per pixel).
+/// found in a table of the 255 decision points (no `pow` per pixel): a 4096-piece index
+/// of the unit interval says where to start, and a step or two finds the code.
 std::uint8_t linear_to_srgb8(double linear);
 /// An 8-bit sRGB code to linear light, from a 256-entry table.
 float srgb8_to_linear(std::uint8_t code);
