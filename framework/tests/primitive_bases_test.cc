@@ -2,6 +2,7 @@
 // geometry_changed() sees every change, and the factories' checks with their messages.
 #include "vl/catch.hh"
 
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,6 +39,20 @@ public:
 
 private:
     void geometry_changed() override { seen_vertices = vertices_.size(); }
+    intersection find_intersection(const ray&) const override { return intersection::none(); }
+};
+
+/// A sphere with no constructor of its own, as the shapes of stage 02 are: made by make().
+class made_sphere final : public shapes::sphere_base {
+public:
+    int changes = 0;         ///< calls of geometry_changed()
+    double seen_radius = 0;  ///< radius_ at the last call
+
+private:
+    void geometry_changed() override {
+        ++changes;
+        seen_radius = radius_;
+    }
     intersection find_intersection(const ray&) const override { return intersection::none(); }
 };
 
@@ -97,4 +112,14 @@ TEST_CASE("primitive bases: each factory check refuses with the factory's messag
                       Catch::StartsWith("make_triangle: its vertices a, b and c are on one line"));
     CHECK_NOTHROW(shapes::polygon_base::check({o, point(1, 0, 0), point(0, 1, 0)}));
     CHECK_THROWS_WITH(shapes::polygon_base::check({o, point(1, 0, 0)}), Catch::StartsWith("make_polygon: "));
+}
+
+TEST_CASE("primitive bases: make() checks, sets the geometry and calls geometry_changed() once",
+          "[primitive_bases]") {
+    const std::unique_ptr<made_sphere> s = shapes::sphere_base::make<made_sphere>(point(1, 2, 3, 2), 0.5);
+    CHECK(s->changes == 1);
+    CHECK(s->seen_radius == 0.5);
+    CHECK(written(*s) == "SPHERE { center 0.5 1 1.5 radius 0.5 }");
+    CHECK_THROWS_WITH(shapes::sphere_base::make<made_sphere>(point(0, 0, 0), 0),
+                      "make_sphere: the center must be finite and the radius a finite number > 0");
 }
