@@ -79,27 +79,14 @@ inline void plane_axes(const vector& n, vector& u, vector& v) {
 // --- independent answer keys (long double) -----------------------------------------------
 
 /// Where the line of `r` meets the sphere: both roots t0 <= t1 (stable formulas), or none.
-struct sphere_roots {
-    bool meets = false;
-    real t0 = 0, t1 = 0;
+struct sphere_key : grading::roots {
     real scale = 0;  ///< |origin - center| + radius: what a double computation's error scales with
 };
-inline sphere_roots sphere_oracle(const point& center, double radius, const ray& r) {
-    const rvec f = to_r(r.origin()) - to_r(center), d = unit(to_r(r.direction()));
-    const real rr = radius;
-    const real b = dot(f, d);
-    const rvec l = f - b * d;
-    const real disc = rr * rr - dot(l, l);
-    sphere_roots out;
-    out.scale = len(f) + rr;
-    if (disc < 0) return out;
-    const real q = -(b + std::copysign(std::sqrt(disc), b));
-    const real c = (len(f) - rr) * (len(f) + rr);
-    real t0 = q == 0 ? 0 : c / q, t1 = q;
-    if (t0 > t1) std::swap(t0, t1);
-    out.meets = true;
-    out.t0 = t0;
-    out.t1 = t1;
+inline sphere_key sphere_oracle(const point& center, double radius, const ray& r) {
+    const rvec o = to_r(r.origin()), c = to_r(center);
+    sphere_key out;
+    static_cast<grading::roots&>(out) = grading::sphere_roots(o, unit(to_r(r.direction())), c, radius);
+    out.scale = len(o - c) + radius;
     return out;
 }
 
