@@ -32,10 +32,6 @@ using namespace vl::stage04::hidden;
 
 namespace {
 
-surface glass(double ior, double ksr = 0, double kst = 1, const color& c = color(1, 1, 1)) {
-    return make_surface(c, 0, ksr, kst, 1, ior);
-}
-
 /// The critical angle of glass of index `ior`, in radians.
 real critical(real ior) { return std::asin(1 / ior); }
 

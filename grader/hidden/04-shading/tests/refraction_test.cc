@@ -29,10 +29,6 @@ using namespace vl::stage04::hidden;
 
 namespace {
 
-surface glass(double ior, double ksr = 0, double kst = 1, const color& c = color(1, 1, 1)) {
-    return make_surface(c, 0, ksr, kst, 1, ior);
-}
-
 /// Checks that among the watcher's rays there is one from (about) `p` along `want`; when
 /// `inside_of` is given, that ray must start inside it.
 void check_transmitted(tally& t, const std::vector<ray>& log, const rvec& p, const rvec& want, const std::string& asked,
