@@ -51,10 +51,7 @@ void check_ray(tally& t, const primitive& s, const ball& b, const ray& r, double
     const double tol = tolerance_of(roots) + extra_tolerance;
     const intersection i = s.intersect(r);
     if (want > 0)
-        t.check(hit_near(i, &s, want, tol), [&] {
-            return show(r) + " should hit " + describe(b) + " at t = " + num(want) + " ± " + num(tol) + "; yours returned " +
-                   show(i, &s);
-        });
+        check_hit_at(t, i, s, r, want, tol, [&] { return describe(b); });
     else
         t.check(clean_miss(i), [&] { return show(r) + " should miss " + describe(b) + "; yours returned " + show(i, &s); });
 }
@@ -254,10 +251,7 @@ TEST_CASE("sphere: the near side of a huge sphere seen from close by keeps its d
         const sphere_key roots = sphere_oracle(b.center, b.radius, r);
         const double want = expected_t(roots, s->zero_t()), tol = 1e-9 * want;
         const intersection i = s->intersect(r);
-        t.check(hit_near(i, s.get(), want, tol), [&] {
-            return show(r) + " should hit " + describe(b) + " at t = " + num(want) + " ± " + num(tol) + "; yours returned " +
-                   show(i, s.get());
-        });
+        check_hit_at(t, i, *s, r, want, tol, [&] { return describe(b); });
     }
     t.report();
 }
