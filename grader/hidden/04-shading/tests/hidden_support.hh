@@ -544,6 +544,12 @@ struct bench {
     }
 };
 
+/// Asks `b` for its patch where `r`'s transmitted ray lands (bench::patch()) and checks
+/// that it could be placed.
+inline bool placed_patch(tally& t, bench& b, const ray& r, const color& c = color(0, 1, 0)) {
+    return t.check(b.patch(r, c), [] { return std::string("the test's patch could not be placed"); });
+}
+
 /// A band scaled by `k` >= 0 and widened by `tol`.
 inline band scaled(const band& b, real k, real tol = 1e-9L) { return {b.lo * k - tol, b.hi * k + tol}; }
 
