@@ -124,6 +124,17 @@ inline void check_parallel_rays_miss(tally& t, const rtab_component& o, const st
     }
 }
 
+/// Checks that `r`, which leaves a point of `o` (`described()`, called only for a message)
+/// whose zero_t is `zero_t`, does not hit it again: a clean miss.
+template <class Described>
+void check_leaving_misses(tally& t, const rtab_component& o, const ray& r, double zero_t, const Described& described) {
+    const intersection i = o.intersect(r);
+    t.check(clean_miss(i), [&] {
+        return show(r) + " starts on " + described() + " (zero_t = " + num(zero_t) +
+               "): it should not hit it again; yours returned " + show(i, &o);
+    });
+}
+
 /// A direction for a ray leaving a point of a flat object whose unit normal is `n` (`u` and
 /// `v` span its plane): for an even `k` a grazing one, 10^lowest to 0.1 radians off the
 /// plane (on the side of `n` when k % 4 == 0, else on the other), for an odd `k` any.
