@@ -16,10 +16,6 @@ namespace {
 /// as given, not unit).
 class plane final : public shapes::plane_base {
 public:
-    plane(const point& point_on_plane, const vector& normal) : plane_base(point_on_plane, normal) {
-        geometry_changed();
-    }
-
     vector normal([[maybe_unused]] const point& p) const override {
         // TODO: the plane's unit normal (the same everywhere).
         throw not_implemented_error();
@@ -28,8 +24,9 @@ public:
     // default min_point() and max_point() (NaN_point, "no box") are already right.
 
 private:
-    /// Called after every change of point_ and normal_: by the constructor above, and by
-    /// the base's read() with what it read from the scene.
+    /// Called after every change of point_ and normal_: once when make_plane() makes the plane
+    /// (the base's make() sets the geometry), and again by the base's read() with what it read
+    /// from the scene.
     void geometry_changed() override {
         // TODO (optional): anything find_intersection() should not recompute for every ray
         // (the unit normal?) belongs here (in members you add), so that it is also right
@@ -49,8 +46,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {
-    shapes::plane_base::check(point_on_plane, normal);
-    return std::make_unique<plane>(point_on_plane, normal);
+    return shapes::plane_base::make<plane>(point_on_plane, normal);
 }
 
 }  // namespace vl::stage02

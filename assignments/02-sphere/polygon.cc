@@ -21,8 +21,6 @@ namespace {
 /// front is the side from which its vertices run counter-clockwise.
 class polygon final : public shapes::polygon_base {
 public:
-    explicit polygon(std::vector<point> vertices) : polygon_base(std::move(vertices)) { geometry_changed(); }
-
     vector normal([[maybe_unused]] const point& p) const override {
         // TODO: the unit normal on the side from which the vertices run counter-clockwise
         // (the same everywhere). vl::newell_normal() (vl/convex_polygon.hh) points that way.
@@ -40,7 +38,8 @@ public:
 
 private:
     /// Called after every change of vertices_ (already checked by find_polygon_problem()):
-    /// by the constructor above, and by the base's read() with what it read from the scene.
+    /// once when make_polygon() makes the polygon (the base's make() sets the geometry),
+    /// and again by the base's read() with what it read from the scene.
     void geometry_changed() override {
         // TODO (optional): anything find_intersection() should not recompute for every ray
         // (the normal? the box?) belongs here (in members you add), so that it is also
@@ -62,8 +61,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_polygon(std::vector<point> vertices) {
-    shapes::polygon_base::check(vertices);
-    return std::make_unique<polygon>(std::move(vertices));
+    return shapes::polygon_base::make<polygon>(std::move(vertices));
 }
 
 }  // namespace vl::stage02

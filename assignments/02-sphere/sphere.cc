@@ -15,8 +15,6 @@ namespace {
 /// members of the base).
 class sphere final : public shapes::sphere_base {
 public:
-    sphere(const point& center, double radius) : sphere_base(center, radius) { geometry_changed(); }
-
     vector normal([[maybe_unused]] const point& p) const override {
         // TODO: the outward unit normal at p, a point on the sphere.
         throw not_implemented_error();
@@ -35,8 +33,9 @@ public:
     }
 
 private:
-    /// Called after every change of center_ and radius_: by the constructor above, and
-    /// by the base's read() with what it read from the scene.
+    /// Called after every change of center_ and radius_: once when make_sphere() makes the
+    /// sphere (the base's make() sets the geometry), and again by the base's read() with what
+    /// it read from the scene.
     void geometry_changed() override {
         // TODO (optional): anything find_intersection() should not recompute for every ray
         // belongs here (in members you add), so that it is also right after read().
@@ -58,8 +57,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    shapes::sphere_base::check(center, radius);
-    return std::make_unique<sphere>(center, radius);
+    return shapes::sphere_base::make<sphere>(center, radius);
 }
 
 }  // namespace vl::stage02

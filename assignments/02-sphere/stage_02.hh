@@ -11,11 +11,11 @@
 /// framework/include/vl/primitive_bases.hh (vl::shapes::sphere_base, plane_base,
 /// triangle_base, polygon_base), which holds the geometry in protected members (`center_`
 /// and `radius_`; `point_` and `normal_`; `a_`, `b_` and `c_`; `vertices_`), names the
-/// object, reads and writes it, and checks a factory's arguments (`check()`); the flat
-/// objects' bases also answer contains(). What the geometry needs beyond that (a unit
-/// normal, a box) a class computes in its override of the base's `geometry_changed()`,
-/// which runs after every change of the geometry: at the end of the class's constructor,
-/// and after read(). For each object you write:
+/// object, reads and writes it, checks a factory's arguments (`check()`) and makes the
+/// object (`make()`, which a factory calls); the flat objects' bases also answer
+/// contains(). What the geometry needs beyond that (a unit normal, a box) a class computes
+/// in its override of the base's `geometry_changed()`, which runs after every change of the
+/// geometry: when make() has set it, and after read(). For each object you write:
 ///
 /// - **find_intersection(r)**, which the framework calls through the counted
 ///   `intersect(r)`. It returns `intersection::at(t, this)` for the *nearest* hit with

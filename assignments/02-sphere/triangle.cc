@@ -15,8 +15,6 @@ namespace {
 /// a, b, c run counter-clockwise.
 class triangle final : public shapes::triangle_base {
 public:
-    triangle(const point& a, const point& b, const point& c) : triangle_base(a, b, c) { geometry_changed(); }
-
     vector normal([[maybe_unused]] const point& p) const override {
         // TODO: the unit normal on the side from which a, b, c run counter-clockwise.
         throw not_implemented_error();
@@ -32,8 +30,9 @@ public:
     }
 
 private:
-    /// Called after every change of a_, b_ and c_: by the constructor above, and by the
-    /// base's read() with what it read from the scene.
+    /// Called after every change of a_, b_ and c_: once when make_triangle() makes the triangle
+    /// (the base's make() sets the geometry), and again by the base's read() with what it read
+    /// from the scene.
     void geometry_changed() override {
         // TODO (optional): anything find_intersection() should not recompute for every ray
         // belongs here (in members you add), so that it is also right after read().
@@ -57,8 +56,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_triangle(const point& a, const point& b, const point& c) {
-    shapes::triangle_base::check(a, b, c);
-    return std::make_unique<triangle>(a, b, c);
+    return shapes::triangle_base::make<triangle>(a, b, c);
 }
 
 }  // namespace vl::stage02

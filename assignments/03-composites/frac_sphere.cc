@@ -13,13 +13,10 @@ namespace vl::stage03 {
 namespace {
 
 /// \brief A sphere with a fractal sphere of `ratio` times its radius on each side but the
-/// one towards its parent, all inside one tight bounding sphere.
+/// one towards its parent, all inside one tight bounding sphere. It needs no constructor:
+/// make<frac_sphere>(center, radius, depth, ratio, surface, parent_direction) makes it,
+/// sets the values and calls build().
 class frac_sphere final : public shapes::frac_sphere_base<bounding_sphere> {
-public:
-    /// Made by make<frac_sphere>(center, radius, depth, ratio, surface, parent_direction),
-    /// which calls build().
-    using frac_sphere_base::frac_sphere_base;
-
 private:
     /// Makes the spheres: called by make(), and again by read() with what it read (once
     /// the spheres made before are gone).

@@ -17,11 +17,6 @@ namespace {
 /// \brief One child seen through a matrix: rays go to the child's space, hits come back.
 class transformed final : public shapes::transformed_base {
 public:
-    /// Stage 01 makes the steps a scene file gives and inverts the matrix.
-    transformed(std::unique_ptr<rtab_component> child, const matrix& object_to_world)
-        : transformed_base(std::move(child), object_to_world,
-                           {stage01::scale_matrix, stage01::rotate_matrix, stage01::translate_matrix}, stage01::inverse) {}
-
     vector normal([[maybe_unused]] const point& p) const override {
         // TODO: the child's normal at the object-space point, taken back to world space
         // with the inverse transpose (normal_matrix_), made unit. Set its w to 0 before
@@ -58,8 +53,9 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component> child, const matrix& object_to_world) {
-    shapes::transformed_base::check_matrix(object_to_world);
-    return std::make_unique<transformed>(std::move(child), object_to_world);
+    // Stage 01 makes the steps a scene file gives and inverts the matrix.
+    return shapes::transformed_base::make<transformed>(std::move(child), object_to_world, stage01::inverse,
+        {stage01::scale_matrix, stage01::rotate_matrix, stage01::translate_matrix});
 }
 
 }  // namespace vl::stage03

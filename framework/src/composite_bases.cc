@@ -87,9 +87,16 @@ void box_base::set_geometry(const point& lo, const point& hi) {
 // ---- TRANSFORM ----
 
 transformed_base::transformed_base(std::unique_ptr<rtab_component> child, const matrix& object_to_world,
-                                   const transform_step_makers& steps, inverter inverse)
-    : steps_(steps), inverse_(inverse) {
+                                   const transform_step_makers& steps, inverter inverse) {
+    set_up(std::move(child), object_to_world, steps, inverse);
+}
+
+void transformed_base::set_up(std::unique_ptr<rtab_component> child, const matrix& object_to_world,
+                              const transform_step_makers& steps, inverter inverse) {
+    steps_ = steps;
+    inverse_ = inverse;
     set_matrix(object_to_world);
+    children_.clear();
     if (child) children_.push_back(std::move(child));
 }
 

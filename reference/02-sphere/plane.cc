@@ -11,10 +11,6 @@ namespace {
 /// \brief The points p with (p - point_) . normal_ == 0.
 class plane final : public shapes::plane_base {
 public:
-    plane(const point& point_on_plane, const vector& normal) : plane_base(point_on_plane, normal) {
-        geometry_changed();
-    }
-
     vector normal(const point&) const override { return unit_normal_; }
     // Unbounded: min_point() and max_point() keep the default NaN_point ("no box").
 
@@ -40,8 +36,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {
-    shapes::plane_base::check(point_on_plane, normal);
-    return std::make_unique<plane>(point_on_plane, normal);
+    return shapes::plane_base::make<plane>(point_on_plane, normal);
 }
 
 }  // namespace vl::stage02

@@ -17,8 +17,6 @@ namespace {
 /// counter-clockwise.
 class polygon final : public shapes::polygon_base {
 public:
-    explicit polygon(std::vector<point> vertices) : polygon_base(std::move(vertices)) { geometry_changed(); }
-
     vector normal(const point&) const override { return normal_; }
     point min_point() const override { return min_; }
     point max_point() const override { return max_; }
@@ -67,8 +65,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_polygon(std::vector<point> vertices) {
-    shapes::polygon_base::check(vertices);
-    return std::make_unique<polygon>(std::move(vertices));
+    return shapes::polygon_base::make<polygon>(std::move(vertices));
 }
 
 }  // namespace vl::stage02

@@ -12,8 +12,6 @@ namespace {
 /// \brief The thesis's sphere: every point at distance `radius_` from `center_`.
 class sphere final : public shapes::sphere_base {
 public:
-    sphere(const point& center, double radius) : sphere_base(center, radius) {}
-
     vector normal(const point& p) const override { return (p - center_).unit(); }
     bool contains(const point& p) const override { return (p - center_).length() < radius_; }
     point min_point() const override { return center_ - vector(radius_, radius_, radius_); }
@@ -53,8 +51,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    shapes::sphere_base::check(center, radius);
-    return std::make_unique<sphere>(center, radius);
+    return shapes::sphere_base::make<sphere>(center, radius);
 }
 
 }  // namespace vl::stage02

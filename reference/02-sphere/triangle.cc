@@ -13,8 +13,6 @@ namespace {
 /// \brief The triangle a b c; its front is the side from which a, b, c run counter-clockwise.
 class triangle final : public shapes::triangle_base {
 public:
-    triangle(const point& a, const point& b, const point& c) : triangle_base(a, b, c) { geometry_changed(); }
-
     vector normal(const point&) const override { return normal_; }
     point min_point() const override {
         return {std::min({a_.x, b_.x, c_.x}), std::min({a_.y, b_.y, c_.y}), std::min({a_.z, b_.z, c_.z})};
@@ -52,8 +50,7 @@ private:
 }  // namespace
 
 std::unique_ptr<primitive> make_triangle(const point& a, const point& b, const point& c) {
-    shapes::triangle_base::check(a, b, c);
-    return std::make_unique<triangle>(a, b, c);
+    return shapes::triangle_base::make<triangle>(a, b, c);
 }
 
 }  // namespace vl::stage02

@@ -10,9 +10,6 @@ namespace {
 /// \brief A sphere with a fractal sphere of `ratio` times its radius on each side but the
 /// one towards its parent, all inside one tight bounding sphere.
 class frac_sphere final : public shapes::frac_sphere_base<bounding_sphere> {
-public:
-    using frac_sphere_base::frac_sphere_base;
-
 private:
     void build() override {
         std::unique_ptr<primitive> big = stage02::make_sphere(center_, radius_);

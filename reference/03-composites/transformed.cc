@@ -14,10 +14,6 @@ namespace {
 /// \brief One child seen through a matrix: rays go to the child's space, hits come back.
 class transformed final : public shapes::transformed_base {
 public:
-    transformed(std::unique_ptr<rtab_component> child, const matrix& object_to_world)
-        : transformed_base(std::move(child), object_to_world,
-                           {stage01::scale_matrix, stage01::rotate_matrix, stage01::translate_matrix}, stage01::inverse) {}
-
     vector normal(const point& p) const override {
         if (children_.empty()) return NaN_vector;
         // Normals go back with the inverse transpose; w is dropped, since the transpose
@@ -63,8 +59,8 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component> child, const matrix& object_to_world) {
-    shapes::transformed_base::check_matrix(object_to_world);
-    return std::make_unique<transformed>(std::move(child), object_to_world);
+    return shapes::transformed_base::make<transformed>(std::move(child), object_to_world, stage01::inverse,
+        {stage01::scale_matrix, stage01::rotate_matrix, stage01::translate_matrix});
 }
 
 }  // namespace vl::stage03

@@ -12,19 +12,11 @@ using namespace vl;
 using namespace vl::stage01;
 using vl::test01::degrees_between;
 using vl::test01::distance;
+using vl::test01::settings;
 
 namespace {
 
 constexpr double tol = 1e-14;
-
-camera_settings settings(const point& eye, const point& look_at, const vector& up, double fov) {
-    camera_settings s;
-    s.eye = eye;
-    s.look_at = look_at;
-    s.up = up;
-    s.fov_degrees = fov;
-    return s;
-}
 
 /// The default view: from (0, 0, 5) towards the origin, +y up.
 camera_settings straight(double fov) { return settings({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, fov); }

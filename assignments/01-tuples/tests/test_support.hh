@@ -88,4 +88,15 @@ inline std::string show(const matrix& m) {
     return s;
 }
 
+/// The camera settings of a view: from `eye` towards `look_at`, `up` up, a vertical field
+/// of view of `fov` degrees.
+inline camera_settings settings(const point& eye, const point& look_at, const vector& up, double fov) {
+    camera_settings s;
+    s.eye = eye;
+    s.look_at = look_at;
+    s.up = up;
+    s.fov_degrees = fov;
+    return s;
+}
+
 }  // namespace vl::test01

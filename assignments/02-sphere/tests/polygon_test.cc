@@ -69,13 +69,7 @@ TEST_CASE("polygon: the faces of a cube leave no gap at their edges and corners"
     const vector x = vector(0.8, 0.6, 0), y = vector(-0.48, 0.64, 0.6), z = x % y;
     const point o(0.3, -0.7, 0.2);
     const auto corner = [&](int i, int j, int k) { return o + i * x + j * y + k * z; };
-    std::vector<std::unique_ptr<primitive>> faces;
-    faces.push_back(make_polygon({corner(0, 0, 0), corner(0, 1, 0), corner(1, 1, 0), corner(1, 0, 0)}));
-    faces.push_back(make_polygon({corner(0, 0, 1), corner(1, 0, 1), corner(1, 1, 1), corner(0, 1, 1)}));
-    faces.push_back(make_polygon({corner(0, 0, 0), corner(1, 0, 0), corner(1, 0, 1), corner(0, 0, 1)}));
-    faces.push_back(make_polygon({corner(0, 1, 0), corner(0, 1, 1), corner(1, 1, 1), corner(1, 1, 0)}));
-    faces.push_back(make_polygon({corner(0, 0, 0), corner(0, 0, 1), corner(0, 1, 1), corner(0, 1, 0)}));
-    faces.push_back(make_polygon({corner(1, 0, 0), corner(1, 1, 0), corner(1, 1, 1), corner(1, 0, 1)}));
+    const std::vector<std::unique_ptr<primitive>> faces = box_of_polygons(o, x, y, z, true);
     const point middle = corner(0, 0, 0) + 0.5 * (x + y + z);
     random_numbers random;
     int leaks = 0;

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "../../01-tuples/tests/test_support.hh"
 #include "all_pieces.hh"
@@ -35,6 +36,26 @@ inline ray ray_through(const point& from, const point& to) { return ray(from, to
 
 /// The distance between two points.
 inline double distance(const point& p, const point& q) { return (p - q).length(); }
+
+/// The six faces of the box with the corner `o` and the edges `x`, `y` and `z` (x % y
+/// towards z), each a make_polygon() of its four corners; each face's front is outside
+/// the box when `fronts_outside`, inside otherwise.
+inline std::vector<std::unique_ptr<primitive>> box_of_polygons(const point& o, const vector& x, const vector& y,
+                                                               const vector& z, bool fronts_outside) {
+    const auto corner = [&](int i, int j, int k) { return o + i * x + j * y + k * z; };
+    // Each face from one corner along two edges: fronts outside take them the other way round.
+    const auto face = [&](const point& a, const point& b, const point& c, const point& d) {
+        return fronts_outside ? make_polygon({a, b, c, d}) : make_polygon({a, d, c, b});
+    };
+    std::vector<std::unique_ptr<primitive>> faces;
+    faces.push_back(face(corner(0, 0, 0), corner(0, 1, 0), corner(1, 1, 0), corner(1, 0, 0)));
+    faces.push_back(face(corner(0, 0, 1), corner(1, 0, 1), corner(1, 1, 1), corner(0, 1, 1)));
+    faces.push_back(face(corner(0, 0, 0), corner(1, 0, 0), corner(1, 0, 1), corner(0, 0, 1)));
+    faces.push_back(face(corner(0, 1, 0), corner(0, 1, 1), corner(1, 1, 1), corner(1, 1, 0)));
+    faces.push_back(face(corner(0, 0, 0), corner(0, 0, 1), corner(0, 1, 1), corner(0, 1, 0)));
+    faces.push_back(face(corner(1, 0, 0), corner(1, 1, 0), corner(1, 1, 1), corner(1, 0, 1)));
+    return faces;
+}
 
 /// Where the line of a ray meets a sphere, in long double: the roots t1 <= t2 of
 /// |origin + t direction - center| = radius, when `meets`.

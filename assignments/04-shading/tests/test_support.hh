@@ -26,6 +26,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "../../02-sphere/tests/test_support.hh"
@@ -102,23 +103,27 @@ inline vector from_vertical(double degrees) {
 
 /// Schlick's reflectance going from index `eta1` into index `eta2` at incidence cosine
 /// `cos_i`, with the cosine on the side of the lower index (stage_04.hh, step 5). 1 for
-/// total internal reflection.
-inline double schlick(double eta1, double eta2, double cos_i) {
-    const double eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
+/// total internal reflection. Computed in `number` (double unless asked for another).
+template <class number = double>
+number schlick(std::type_identity_t<number> eta1, std::type_identity_t<number> eta2,
+               std::type_identity_t<number> cos_i) {
+    const number eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
     if (k < 0) return 1;
-    const double cos = eta1 <= eta2 ? cos_i : std::sqrt(k);
-    const double r0 = ((eta1 - eta2) / (eta1 + eta2)) * ((eta1 - eta2) / (eta1 + eta2));
+    const number cos = eta1 <= eta2 ? cos_i : std::sqrt(k);
+    const number r0 = ((eta1 - eta2) / (eta1 + eta2)) * ((eta1 - eta2) / (eta1 + eta2));
     return r0 + (1 - r0) * std::pow(1 - cos, 5);
 }
 
 /// The exact Fresnel reflectance for unpolarised light (the mean of the s and p parts),
-/// also accepted by the contract. 1 for total internal reflection.
-inline double fresnel_exact(double eta1, double eta2, double cos_i) {
-    const double eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
+/// also accepted by the contract. 1 for total internal reflection. Computed in `number`.
+template <class number = double>
+number fresnel_exact(std::type_identity_t<number> eta1, std::type_identity_t<number> eta2,
+                     std::type_identity_t<number> cos_i) {
+    const number eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
     if (k < 0) return 1;
-    const double cos_t = std::sqrt(k);
-    const double rs = (eta1 * cos_i - eta2 * cos_t) / (eta1 * cos_i + eta2 * cos_t);
-    const double rp = (eta2 * cos_i - eta1 * cos_t) / (eta2 * cos_i + eta1 * cos_t);
+    const number cos_t = std::sqrt(k);
+    const number rs = (eta1 * cos_i - eta2 * cos_t) / (eta1 * cos_i + eta2 * cos_t);
+    const number rp = (eta2 * cos_i - eta1 * cos_t) / (eta2 * cos_i + eta1 * cos_t);
     return (rs * rs + rp * rp) / 2;
 }
 

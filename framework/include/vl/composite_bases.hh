@@ -84,10 +84,9 @@ void write_frac_sphere(std::ostream& out, const frac_sphere_params& p, const sur
 /// test serve every level.
 ///
 /// A derived class writes build(), which makes the spheres of one level from center_,
-/// radius_, depth_, ratio_, surface_ and parent_direction_. It takes this class's
-/// constructor (`using frac_sphere_base::frac_sphere_base;`) and is made by make(),
-/// which calls build(); read() calls build() again with what it read, once the old
-/// spheres are gone.
+/// radius_, depth_, ratio_, surface_ and parent_direction_, and no constructor: it is made
+/// by make(), which sets the values and calls build(); read() calls build() again with
+/// what it read, once the old spheres are gone.
 template <class sphere_class>
 class frac_sphere_base : public sphere_class {
 public:
@@ -118,25 +117,37 @@ public:
     /// parent_direction_ of the top sphere, which has no parent.
     static constexpr int no_parent = -1;
 
-    /// A fractal sphere of the derived type `fractal` with these values (not checked: see
-    /// check_frac_sphere()), built: its parent is in direction `parent_direction` (an index
-    /// of `directions`, or no_parent). A constructor cannot call build(), which only the
-    /// derived class defines, so every fractal sphere is made here.
+    /// A fractal sphere of the derived type `fractal` (default-constructible) with these
+    /// values (not checked: see check_frac_sphere()), built: its parent is in direction
+    /// `parent_direction` (an index of `directions`, or no_parent). A constructor cannot
+    /// call build(), which only the derived class defines, so every fractal sphere is made
+    /// here.
     template <class fractal>
     static std::unique_ptr<fractal> make(const point& center, double radius, int depth, double ratio,
                                          const surface& s = {}, int parent_direction = no_parent) {
-        auto f = std::make_unique<fractal>(center, radius, depth, ratio, s, parent_direction);
-        static_cast<frac_sphere_base&>(*f).build();
+        auto f = std::make_unique<fractal>();
+        frac_sphere_base& base = *f;
+        base.center_ = center.homogenized();
+        base.radius_ = radius;
+        base.depth_ = depth;
+        base.ratio_ = ratio;
+        base.surface_ = s;
+        base.parent_direction_ = parent_direction;
+        base.build();
         return f;
     }
 
-    /// A fractal sphere of these values, without its spheres: make() builds them.
+    /// A fractal sphere of these values, without its spheres (for a derived class that
+    /// constructs itself; make() does not need it).
     frac_sphere_base(const point& center, double radius, int depth, double ratio, const surface& s,
                      int parent_direction)
         : center_(center.homogenized()), radius_(radius), depth_(depth), ratio_(ratio), surface_(s),
           parent_direction_(parent_direction) {}
 
 protected:
+    /// No values yet: make() sets them.
+    frac_sphere_base() = default;
+
     /// The six axis directions; direction `k ^ 1` is the opposite of direction `k`.
     static constexpr vector directions[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
@@ -145,12 +156,12 @@ protected:
     /// (the derived class's algorithm).
     virtual void build() = 0;
 
-    point center_;          ///< the big sphere's centre, homogenized
-    double radius_;         ///< the big sphere's radius
-    int depth_;             ///< how many levels of smaller spheres there are below this one
-    double ratio_;          ///< a child's radius over its parent's
-    surface surface_;       ///< the surface of every sphere
-    int parent_direction_;  ///< the index in `directions` towards the parent, or no_parent
+    point center_;                       ///< the big sphere's centre, homogenized
+    double radius_ = 1;                  ///< the big sphere's radius
+    int depth_ = 0;                      ///< how many levels of smaller spheres there are below this one
+    double ratio_ = 0.5;                 ///< a child's radius over its parent's
+    surface surface_;                    ///< the surface of every sphere
+    int parent_direction_ = no_parent;  ///< the index in `directions` towards the parent, or no_parent
 };
 
 /// \brief An axis-aligned box of six faces without its algorithm: its corners and surface,
@@ -197,7 +208,8 @@ protected:
 /// and the normal matrix, the one child and its surface,
 /// `TRANSFORM { STEP STEP ... OBJECT }` in a scene file.
 ///
-/// A derived class writes the ray test, normal(), contains(), min_point() and max_point().
+/// A derived class writes the ray test, normal(), contains(), min_point() and max_point(),
+/// and no constructor: make() makes it, with the functions of stage 01 it is given.
 class transformed_base : public rtab_composite {
 public:
     /// `TRANSFORM`, the name in a scene file.
@@ -227,15 +239,34 @@ public:
     /// place an object (checks::unusable_matrix()).
     static void check_matrix(const matrix& object_to_world);
 
-protected:
     /// How a matrix is inverted: stage 01's inverse() (the framework does not depend on a
     /// stage).
     using inverter = matrix (*)(const matrix& m);
+
+    /// A `transformed` (a class derived from this one, default-constructible) that sees
+    /// `child` (may be null) through `object_to_world`, as make_transformed() makes it:
+    /// check_matrix(), then the matrices. `inverse` inverts every matrix, `steps` make the
+    /// steps that read() reads (stage 01's functions).
+    template <class transformed>
+    static std::unique_ptr<transformed> make(std::unique_ptr<rtab_component> child, const matrix& object_to_world,
+                                             inverter inverse, const transform_step_makers& steps) {
+        check_matrix(object_to_world);
+        auto made = std::make_unique<transformed>();
+        static_cast<transformed_base&>(*made).set_up(std::move(child), object_to_world, steps, inverse);
+        return made;
+    }
+
+protected:
+    /// No child, no functions and no matrix yet: make() sets them.
+    transformed_base() = default;
 
     /// `child` (may be null) seen through `object_to_world` (usable: see check_matrix()).
     /// `steps` make the steps that read() reads, `inverse` inverts every matrix.
     transformed_base(std::unique_ptr<rtab_component> child, const matrix& object_to_world,
                      const transform_step_makers& steps, inverter inverse);
+    /// What that constructor does, for make().
+    void set_up(std::unique_ptr<rtab_component> child, const matrix& object_to_world,
+                const transform_step_makers& steps, inverter inverse);
 
     /// Sets to_world_ to `m`, to_object_ to its inverse and normal_matrix_ to the inverse's
     /// transpose.
@@ -246,8 +277,8 @@ protected:
     matrix normal_matrix_;  ///< (M⁻¹)ᵀ, which takes normals to world space
 
 private:
-    transform_step_makers steps_;
-    inverter inverse_;
+    transform_step_makers steps_{};
+    inverter inverse_ = nullptr;
 };
 
 /// \brief A bounding volume hierarchy without its algorithm: the leaf size, the children,
@@ -271,6 +302,15 @@ public:
 
     /// Throws vl::usage_error, as make_bvh() does, when `leaf_size` is not from 1 to 64.
     static void check_leaf_size(int leaf_size);
+
+    /// An empty `bvh` (a class derived from this one, constructed from the leaf size) whose
+    /// leaves hold at most `leaf_size` children, as make_bvh() makes it: check_leaf_size(),
+    /// then the BVH.
+    template <class bvh>
+    static std::unique_ptr<bvh> make(int leaf_size) {
+        check_leaf_size(leaf_size);
+        return std::make_unique<bvh>(leaf_size);
+    }
 
 protected:
     /// An empty BVH whose leaves hold at most `leaf_size` children.

@@ -5,13 +5,12 @@
 /// shape's own file is only its geometry: find_intersection(), normal(), the bounds and
 /// what it precomputes.
 ///
-/// A shape derives from its base, passes the geometry to the base's constructor and calls
-/// geometry_changed() at the end of its own constructor (a base's constructor cannot call
-/// a derived class's override); the base's read() calls it again after reading:
+/// A shape derives from its base and writes no constructor: its factory calls the base's
+/// make(), which checks the arguments (the check of the factory), makes the shape and sets
+/// its geometry, which calls geometry_changed() once; the base's read() calls it again
+/// after reading (a base's constructor could not call a derived class's override):
 ///
 ///     class sphere final : public shapes::sphere_base {
-///     public:
-///         sphere(const point& center, double radius) : sphere_base(center, radius) { geometry_changed(); }
 ///         ...
 ///     private:
 ///         void geometry_changed() override { ... }  // precompute from center_ and radius_
@@ -19,14 +18,14 @@
 ///     };
 ///
 ///     std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-///         shapes::sphere_base::check(center, radius);
-///         return std::make_unique<sphere>(center, radius);
+///         return shapes::sphere_base::make<sphere>(center, radius);
 ///     }
 ///
 /// Every member is virtual or protected where a shape may want its own: a shape may
 /// override read() or write(), and call set_geometry() from its own read().
 
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -51,7 +50,20 @@ public:
     /// `center` is not finite or `radius` is not a finite number > 0.
     static void check(const point& center, double radius);
 
+    /// A `shape` (a class derived from this one, default-constructible) of this geometry,
+    /// as make_sphere() makes it: check()s the arguments, makes the shape and
+    /// set_geometry()s it, which calls its geometry_changed() once.
+    template <class shape>
+    static std::unique_ptr<shape> make(const point& center, double radius) {
+        check(center, radius);
+        auto made = std::make_unique<shape>();
+        static_cast<sphere_base&>(*made).set_geometry(center, radius);
+        return made;
+    }
+
 protected:
+    /// No geometry yet: make() sets it.
+    sphere_base() = default;
     /// Stores the geometry (as set_geometry() does, without calling geometry_changed()).
     sphere_base(const point& center, double radius);
 
@@ -86,7 +98,20 @@ public:
     /// `point_on_plane` is not finite or `normal` is not a usable normal.
     static void check(const point& point_on_plane, const vector& normal);
 
+    /// A `shape` (a class derived from this one, default-constructible) of this geometry,
+    /// as make_plane() makes it: check()s the arguments, makes the shape and
+    /// set_geometry()s it, which calls its geometry_changed() once.
+    template <class shape>
+    static std::unique_ptr<shape> make(const point& point_on_plane, const vector& normal) {
+        check(point_on_plane, normal);
+        auto made = std::make_unique<shape>();
+        static_cast<plane_base&>(*made).set_geometry(point_on_plane, normal);
+        return made;
+    }
+
 protected:
+    /// No geometry yet: make() sets it.
+    plane_base() = default;
     /// Stores the geometry (as set_geometry() does, without calling geometry_changed()).
     plane_base(const point& point_on_plane, const vector& normal);
 
@@ -122,7 +147,20 @@ public:
     /// the vertices (homogenized) are not a triangle (checks::triangle_problem()).
     static void check(const point& a, const point& b, const point& c);
 
+    /// A `shape` (a class derived from this one, default-constructible) of this geometry,
+    /// as make_triangle() makes it: check()s the arguments, makes the shape and
+    /// set_geometry()s it, which calls its geometry_changed() once.
+    template <class shape>
+    static std::unique_ptr<shape> make(const point& a, const point& b, const point& c) {
+        check(a, b, c);
+        auto made = std::make_unique<shape>();
+        static_cast<triangle_base&>(*made).set_geometry(a, b, c);
+        return made;
+    }
+
 protected:
+    /// No geometry yet: make() sets it.
+    triangle_base() = default;
     /// Stores the geometry (as set_geometry() does, without calling geometry_changed()).
     triangle_base(const point& a, const point& b, const point& c);
 
@@ -157,7 +195,20 @@ public:
     /// vertices (homogenized) are not a convex planar polygon (find_polygon_problem()).
     static void check(const std::vector<point>& vertices);
 
+    /// A `shape` (a class derived from this one, default-constructible) of this geometry,
+    /// as make_polygon() makes it: check()s the arguments, makes the shape and
+    /// set_geometry()s it, which calls its geometry_changed() once.
+    template <class shape>
+    static std::unique_ptr<shape> make(std::vector<point> vertices) {
+        check(vertices);
+        auto made = std::make_unique<shape>();
+        static_cast<polygon_base&>(*made).set_geometry(std::move(vertices));
+        return made;
+    }
+
 protected:
+    /// No geometry yet: make() sets it.
+    polygon_base() = default;
     /// Stores the geometry (as set_geometry() does, without calling geometry_changed()).
     explicit polygon_base(std::vector<point> vertices);
 

@@ -5,6 +5,7 @@
 /// a check.
 
 #include <cmath>
+#include <utility>
 
 #include "vl/tuples.hh"
 
@@ -38,6 +39,30 @@ inline point to_point(const rvec& a) {
 }
 inline vector to_vector(const rvec& a) {
     return vector(static_cast<double>(a.x), static_cast<double>(a.y), static_cast<double>(a.z));
+}
+
+/// The long-double roots t0 <= t1 of a line with a sphere; `meets` is false when the line
+/// passes beside it.
+struct roots {
+    bool meets = false;
+    real t0 = 0, t1 = 0;
+};
+/// The roots of the line o + t d (d unit) with the sphere of centre `c` and `radius`.
+inline roots sphere_roots(const rvec& o, const rvec& d, const rvec& c, real radius) {
+    const rvec f = o - c;
+    const real b = dot(f, d);
+    const rvec l = f - b * d;
+    const real disc = (radius - len(l)) * (radius + len(l));
+    roots out;
+    if (disc < 0) return out;
+    const real q = -(b + std::copysign(std::sqrt(disc), b));
+    const real cc = (len(f) - radius) * (len(f) + radius);
+    real t0 = q == 0 ? 0 : cc / q, t1 = q;
+    if (t0 > t1) std::swap(t0, t1);
+    out.meets = true;
+    out.t0 = t0;
+    out.t1 = t1;
+    return out;
 }
 
 }  // namespace vl::grading

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "01-tuples/tests/test_support.hh"
 #include "grading.hh"
 #include "stage_01.hh"
 #include "vl/error.hh"
@@ -344,14 +345,7 @@ struct pinhole {
     vec3 direction(ld x, ld y) const { return unit(on_plane(x, y)); }
 };
 
-inline camera_settings settings(const point& eye, const point& look_at, const vector& up, double fov) {
-    camera_settings s;
-    s.eye = eye;
-    s.look_at = look_at;
-    s.up = up;
-    s.fov_degrees = fov;
-    return s;
-}
+using test01::settings;
 
 /// "eye (..) look_at (..) up (..) fov F on a W x H image", for messages.
 inline std::string describe(const camera_settings& s, int width, int height) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <memory>
@@ -39,6 +40,7 @@ using grading::surface_of;
 using grading::surface_text;
 using grading::tally;
 using grading::to_r;
+using testing::box_of_polygons;
 using testing::ray_through;
 /// Seeded random numbers (the public tests' generator, with seeds of the hidden tests' own).
 using sampler = testing::random_numbers;
@@ -67,6 +69,31 @@ inline bool hit_near(const intersection& i, const rtab_component* object, double
     return clean_hit(i, object) && std::fabs(i.t - want) <= tolerance;
 }
 
+/// Checks that `got` (`who`, in words) answered `r` with `i` as `want` (a `type` made by its
+/// factory) did with `w`: both hits, at t within `tol` and on `got`, or both clean misses.
+inline void check_same_answer(tally& t, const ray& r, const rtab_component& got, const intersection& i,
+                              const rtab_component& want, const intersection& w, double tol, const std::string& who,
+                              const std::string& type) {
+    const bool same = (i.hit() && w.hit() && std::fabs(i.t - w.t) <= tol && i.object == &got) ||
+                      (clean_miss(i) && clean_miss(w));
+    t.check(same, [&] {
+        return show(r) + ": " + who + " returned " + show(i, &got) + " where the " + type + " returned " + show(w, &want) +
+               " (± " + num(tol) + ")";
+    });
+}
+
+/// Checks that `i`, what `o` answered to `r` (which comes `side`, in words, or ""), is a
+/// hit at t = `want` ± `tol`. `described()` names the object in the message (called only
+/// for one).
+template <class Described>
+void check_hit_at(tally& t, const intersection& i, const rtab_component& o, const ray& r, double want, double tol,
+                  const Described& described, const std::string& side = "") {
+    t.check(hit_near(i, &o, want, tol), [&] {
+        return show(r) + side + " should hit " + described() + " at t = " + num(want) + " ± " + num(tol) +
+               "; yours returned " + show(i, &o);
+    });
+}
+
 // --- random inputs -----------------------------------------------------------------------
 
 /// Two unit vectors spanning the plane perpendicular to `n`.
@@ -76,30 +103,63 @@ inline void plane_axes(const vector& n, vector& u, vector& v) {
     v = (n.unit() % u).unit();
 }
 
+/// Checks that rays along each of `directions` (parallel to the flat object `o`, described
+/// as `described`) miss it cleanly: through `on + offset n` for each of `offsets` (0: in
+/// its plane), each ray once from 10 units back and once from that point.
+inline void check_parallel_rays_miss(tally& t, const rtab_component& o, const std::string& described, const point& on,
+                                     const vector& n, std::initializer_list<vector> directions,
+                                     std::initializer_list<double> offsets) {
+    for (const vector d : directions) {
+        for (const double offset : offsets) {
+            const point through = on + offset * n;
+            // Starting outside and crossing the object's outline, and starting inside it.
+            for (const ray& r : {ray(through - 10 * d.unit(), d), ray(through, d)}) {
+                const intersection i = o.intersect(r);
+                t.check(clean_miss(i), [&] {
+                    return show(r) + " runs parallel to " + described + (offset == 0 ? " in its plane" : "") +
+                           ": it should miss; yours returned " + show(i, &o);
+                });
+            }
+        }
+    }
+}
+
+/// Checks that `r`, which leaves a point of `o` (`described()`, called only for a message)
+/// whose zero_t is `zero_t`, does not hit it again: a clean miss.
+template <class Described>
+void check_leaving_misses(tally& t, const rtab_component& o, const ray& r, double zero_t, const Described& described) {
+    const intersection i = o.intersect(r);
+    t.check(clean_miss(i), [&] {
+        return show(r) + " starts on " + described() + " (zero_t = " + num(zero_t) +
+               "): it should not hit it again; yours returned " + show(i, &o);
+    });
+}
+
+/// A direction for a ray leaving a point of a flat object whose unit normal is `n` (`u` and
+/// `v` span its plane): for an even `k` a grazing one, 10^lowest to 0.1 radians off the
+/// plane (on the side of `n` when k % 4 == 0, else on the other), for an odd `k` any.
+inline vector leaving_direction(sampler& random, int k, const vector& n, const vector& u, const vector& v,
+                                double lowest) {
+    vector d = random.direction();
+    if (k % 2 == 0) {
+        const double angle = std::pow(10.0, random.uniform(lowest, -1)) * (k % 4 == 0 ? 1 : -1);
+        const double turn = random.uniform(0, 2 * std::numbers::pi);
+        d = std::cos(angle) * (std::cos(turn) * u + std::sin(turn) * v) + std::sin(angle) * n;
+    }
+    return d;
+}
+
 // --- independent answer keys (long double) -----------------------------------------------
 
 /// Where the line of `r` meets the sphere: both roots t0 <= t1 (stable formulas), or none.
-struct sphere_roots {
-    bool meets = false;
-    real t0 = 0, t1 = 0;
+struct sphere_key : grading::roots {
     real scale = 0;  ///< |origin - center| + radius: what a double computation's error scales with
 };
-inline sphere_roots sphere_oracle(const point& center, double radius, const ray& r) {
-    const rvec f = to_r(r.origin()) - to_r(center), d = unit(to_r(r.direction()));
-    const real rr = radius;
-    const real b = dot(f, d);
-    const rvec l = f - b * d;
-    const real disc = rr * rr - dot(l, l);
-    sphere_roots out;
-    out.scale = len(f) + rr;
-    if (disc < 0) return out;
-    const real q = -(b + std::copysign(std::sqrt(disc), b));
-    const real c = (len(f) - rr) * (len(f) + rr);
-    real t0 = q == 0 ? 0 : c / q, t1 = q;
-    if (t0 > t1) std::swap(t0, t1);
-    out.meets = true;
-    out.t0 = t0;
-    out.t1 = t1;
+inline sphere_key sphere_oracle(const point& center, double radius, const ray& r) {
+    const rvec o = to_r(r.origin()), c = to_r(center);
+    sphere_key out;
+    static_cast<grading::roots&>(out) = grading::sphere_roots(o, unit(to_r(r.direction())), c, radius);
+    out.scale = len(o - c) + radius;
     return out;
 }
 

@@ -43,10 +43,7 @@ void check_ray(tally& t, const primitive& pl, const flat& p, const ray& r) {
     const intersection i = pl.intersect(r);
     const std::string side = (r.origin() - p.on) * p.normal > 0 ? " (from the front)" : " (from behind)";
     if (hits)
-        t.check(hit_near(i, &pl, exact, tol), [&] {
-            return show(r) + side + " should hit " + describe(p) + " at t = " + num(exact) + " ± " + num(tol) +
-                   "; yours returned " + show(i, &pl);
-        });
+        check_hit_at(t, i, pl, r, exact, tol, [&] { return describe(p); }, side);
     else
         t.check(clean_miss(i), [&] { return show(r) + side + " should miss " + describe(p) + "; yours returned " + show(i, &pl); });
 }
@@ -180,18 +177,8 @@ TEST_CASE("plane: rays that start on the plane do not hit it again, whatever the
             plane_axes(n, u, v);
             for (int k = 0; k < 500; ++k) {
                 const point on = p.on + random.uniform(-500, 500) * u + random.uniform(-500, 500) * v;
-                vector d = random.direction();
-                if (k % 2 == 0) {  // grazing: 1e-4 to 0.1 radians off the plane
-                    const double angle = std::pow(10.0, random.uniform(-4, -1)) * (k % 4 == 0 ? 1 : -1);
-                    const double turn = random.uniform(0, 2 * std::numbers::pi);
-                    d = std::cos(angle) * (std::cos(turn) * u + std::sin(turn) * v) + std::sin(angle) * n;
-                }
-                const ray r(on, d);
-                const intersection i = pl->intersect(r);
-                t.check(clean_miss(i), [&] {
-                    return show(r) + " starts on " + describe(p) + " (zero_t = " + num(zero_t) +
-                           "): it should not hit it again; yours returned " + show(i, pl.get());
-                });
+                const vector d = leaving_direction(random, k, n, u, v, -4);
+                check_leaving_misses(t, *pl, ray(on, d), zero_t, [&] { return describe(p); });
             }
         }
     }

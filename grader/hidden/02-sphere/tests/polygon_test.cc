@@ -103,10 +103,7 @@ void check_ray(tally& t, const primitive& poly, const shape& v, const ray& r, do
     const std::string side = (r.origin() - v[0]) * normal_of(v) > 0 ? " from the front" : " from behind";
     if (hits) {
         const double tol = tolerance_of(v, r, want) + extra;
-        t.check(hit_near(i, &poly, want, tol), [&] {
-            return show(r) + side + " should hit " + describe(v) + " at t = " + num(want) + " ± " + num(tol) +
-                   "; yours returned " + show(i, &poly);
-        });
+        check_hit_at(t, i, poly, r, want, tol, [&] { return describe(v); }, side);
     } else {
         t.check(clean_miss(i), [&] {
             return show(r) + side + " should miss " + describe(v) +
@@ -145,13 +142,7 @@ void check_same_polygon(tally& t, const rtab_component& got, const primitive& wa
         const polygon_answer exact = polygon_oracle(v, r);
         if (std::fabs(static_cast<double>(exact.inside)) < 1e-6) continue;
         const intersection i = got.intersect(r), w = want.intersect(r);
-        const double tol = tolerance_of(v, r, w.t) + slack;
-        const bool same = (i.hit() && w.hit() && std::fabs(i.t - w.t) <= tol && i.object == &got) ||
-                          (clean_miss(i) && clean_miss(w));
-        t.check(same, [&] {
-            return show(r) + ": " + who + " returned " + show(i, &got) + " where the polygon returned " + show(w, &want) +
-                   " (± " + num(tol) + ")";
-        });
+        check_same_answer(t, r, got, i, want, w, tolerance_of(v, r, w.t) + slack, who, "polygon");
     }
 }
 
@@ -253,17 +244,9 @@ TEST_CASE("polygon: rays exactly parallel to a polygon or lying in its plane mis
     tally t("rays parallel to a polygon");
     const shape v = {point(-1, 0, -1), point(1, 0, -1.5), point(2, 0, 0.5), point(0, 0, 2), point(-1.5, 0, 1)};
     const auto p = make_polygon(v);
-    for (const vector d : {vector(1, 0, 0), vector(0.3, 0, -1), vector(-1, 0, -1), vector(1, 0, 1e-3)}) {
-        for (const double y : {0.0, 1e-9, -1e-9, -4.0}) {
-            for (const ray& r : {ray(point(0.2, y, 0.1) - 10 * d.unit(), d), ray(point(0.2, y, 0.1), d)}) {
-                const intersection i = p->intersect(r);
-                t.check(clean_miss(i), [&] {
-                    return show(r) + " runs parallel to " + describe(v) + (y == 0 ? " in its plane" : "") +
-                           ": it should miss; yours returned " + show(i, p.get());
-                });
-            }
-        }
-    }
+    check_parallel_rays_miss(t, *p, describe(v), point(0.2, 0, 0.1), vector(0, 1, 0),
+                             {vector(1, 0, 0), vector(0.3, 0, -1), vector(-1, 0, -1), vector(1, 0, 1e-3)},
+                             {0.0, 1e-9, -1e-9, -4.0});
     t.report();
 }
 
@@ -283,18 +266,8 @@ TEST_CASE("polygon: rays leaving a point of the polygon never hit it again, what
         for (int k = 0; k < 1500; ++k) {
             const double r = 8 * std::sqrt(random.uniform(0, 1)), phi = random.uniform(0, 2 * std::numbers::pi);
             const point on = centre + r * std::cos(phi) * u + r * std::sin(phi) * v;
-            vector d = random.direction();
-            if (k % 2 == 0) {
-                const double angle = std::pow(10.0, random.uniform(-5, -1)) * (k % 4 == 0 ? 1 : -1);
-                const double turn = random.uniform(0, 2 * std::numbers::pi);
-                d = std::cos(angle) * (std::cos(turn) * u + std::sin(turn) * v) + std::sin(angle) * n;
-            }
-            const ray leaving(on, d);
-            const intersection i = p->intersect(leaving);
-            t.check(clean_miss(i), [&] {
-                return show(leaving) + " starts on the octagon around " + show(centre) + " (zero_t = " + num(zero_t) +
-                       "): it should not hit it again; yours returned " + show(i, p.get());
-            });
+            const vector d = leaving_direction(random, k, n, u, v, -5);
+            check_leaving_misses(t, *p, ray(on, d), zero_t, [&] { return "the octagon around " + show(centre); });
         }
     }
     t.report();
@@ -334,13 +307,7 @@ TEST_CASE("polygon: rays from inside a box of six rectangular faces never escape
     const vector x = 1.7 * vector(0.6, 0, -0.8), y = 0.9 * vector(0.48, 0.6, 0.36), z = 1.3 * (x % y).unit();
     const point o(10.3, -4.4, 7.9);
     const auto corner = [&](int i, int j, int k) { return o + i * x + j * y + k * z; };
-    std::vector<std::unique_ptr<primitive>> faces;
-    faces.push_back(make_polygon({corner(0, 0, 0), corner(1, 0, 0), corner(1, 1, 0), corner(0, 1, 0)}));
-    faces.push_back(make_polygon({corner(0, 0, 1), corner(0, 1, 1), corner(1, 1, 1), corner(1, 0, 1)}));
-    faces.push_back(make_polygon({corner(0, 0, 0), corner(0, 0, 1), corner(1, 0, 1), corner(1, 0, 0)}));
-    faces.push_back(make_polygon({corner(0, 1, 0), corner(1, 1, 0), corner(1, 1, 1), corner(0, 1, 1)}));
-    faces.push_back(make_polygon({corner(0, 0, 0), corner(0, 1, 0), corner(0, 1, 1), corner(0, 0, 1)}));
-    faces.push_back(make_polygon({corner(1, 0, 0), corner(1, 0, 1), corner(1, 1, 1), corner(1, 1, 0)}));
+    const std::vector<std::unique_ptr<primitive>> faces = box_of_polygons(o, x, y, z, false);
     const point middle = o + 0.5 * (x + y + z);
     tally t("rays from inside a closed box of polygons (none of its faces hit)");
     sampler random(33);

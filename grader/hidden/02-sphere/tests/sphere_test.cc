@@ -33,10 +33,10 @@ std::string describe(const ball& b) { return "the sphere around " + show(b.cente
 
 // The tolerance of a hit distance: 1e-12 of the size of the numbers involved, which is
 // what a formula that does not cancel keeps.
-double tolerance_of(const sphere_roots& roots) { return 1e-12 * static_cast<double>(roots.scale); }
+double tolerance_of(const sphere_key& roots) { return 1e-12 * static_cast<double>(roots.scale); }
 
 // The nearest root beyond |zero_t|, as the contract asks.
-double expected_t(const sphere_roots& roots, double zero_t) {
+double expected_t(const sphere_key& roots, double zero_t) {
     const double eps = std::fabs(zero_t);
     if (!roots.meets) return 0;
     if (roots.t0 > eps) return static_cast<double>(roots.t0);
@@ -46,15 +46,12 @@ double expected_t(const sphere_roots& roots, double zero_t) {
 
 // Checks one ray against the answer key: a hit at the expected t, or a miss.
 void check_ray(tally& t, const primitive& s, const ball& b, const ray& r, double extra_tolerance = 0) {
-    const sphere_roots roots = sphere_oracle(b.center, b.radius, r);
+    const sphere_key roots = sphere_oracle(b.center, b.radius, r);
     const double want = expected_t(roots, s.zero_t());
     const double tol = tolerance_of(roots) + extra_tolerance;
     const intersection i = s.intersect(r);
     if (want > 0)
-        t.check(hit_near(i, &s, want, tol), [&] {
-            return show(r) + " should hit " + describe(b) + " at t = " + num(want) + " ± " + num(tol) + "; yours returned " +
-                   show(i, &s);
-        });
+        check_hit_at(t, i, s, r, want, tol, [&] { return describe(b); });
     else
         t.check(clean_miss(i), [&] { return show(r) + " should miss " + describe(b) + "; yours returned " + show(i, &s); });
 }
@@ -196,7 +193,7 @@ TEST_CASE("sphere: rays that start on the surface hit the far side going in and 
                                show(i, s.get());
                     });
                 } else {
-                    const sphere_roots roots = sphere_oracle(b.center, b.radius, r);
+                    const sphere_key roots = sphere_oracle(b.center, b.radius, r);
                     const double want = static_cast<double>(roots.t1), tol = tolerance_of(roots);
                     t.check(hit_near(i, s.get(), want, tol), [&] {
                         return show(r) + " enters " + describe(b) + what + ": it should hit the far side at t = " + num(want) +
@@ -226,7 +223,7 @@ TEST_CASE("sphere: zero_t, positive or negative, hides every hit up to its absol
         vl::surface surf;
         surf.zero_t = c.zero_t;
         s->set_surface(surf);
-        const sphere_roots roots = sphere_oracle(b.center, b.radius, *c.r);
+        const sphere_key roots = sphere_oracle(b.center, b.radius, *c.r);
         const double want = expected_t(roots, c.zero_t), tol = tolerance_of(roots);
         const intersection i = s->intersect(*c.r);
         t.check(want > 0 ? hit_near(i, s.get(), want, tol) : clean_miss(i), [&] {
@@ -251,13 +248,10 @@ TEST_CASE("sphere: the near side of a huge sphere seen from close by keeps its d
         const point from(random.uniform(-50, 50), random.uniform(0.5, 2), random.uniform(-50, 50));
         const vector d = k == 0 ? vector(0, -1, 0) : vector(random.uniform(-0.5, 0.5), -1, random.uniform(-0.5, 0.5));
         const ray r(k == 0 ? point(0, 1, 0) : from, d);
-        const sphere_roots roots = sphere_oracle(b.center, b.radius, r);
+        const sphere_key roots = sphere_oracle(b.center, b.radius, r);
         const double want = expected_t(roots, s->zero_t()), tol = 1e-9 * want;
         const intersection i = s->intersect(r);
-        t.check(hit_near(i, s.get(), want, tol), [&] {
-            return show(r) + " should hit " + describe(b) + " at t = " + num(want) + " ± " + num(tol) + "; yours returned " +
-                   show(i, s.get());
-        });
+        check_hit_at(t, i, *s, r, want, tol, [&] { return describe(b); });
     }
     t.report();
 }
@@ -510,7 +504,7 @@ TEST_CASE("sweep: sphere: grazing rays from 1e-15 to 0.1 radii inside and outsid
                 const vector side = std::cos(turn) * u + std::sin(turn) * v;
                 for (const double offset : {1 - margin, 1 + margin}) {
                     const ray r(b.center + offset * b.radius * side - 10 * b.radius * d, d);
-                    const sphere_roots roots = sphere_oracle(b.center, b.radius, r);
+                    const sphere_key roots = sphere_oracle(b.center, b.radius, r);
                     const double want = expected_t(roots, s->zero_t());
                     const double tol = 1e-6 * static_cast<double>(roots.scale);
                     intersection i;

@@ -55,10 +55,7 @@ void check_ray(tally& t, const primitive& tri, const corners& k, const ray& r, d
     const std::string side = (r.origin() - k.a) * n > 0 ? " from the front" : " from behind";
     if (hits) {
         const double tol = tolerance_of(k, r, want);
-        t.check(hit_near(i, &tri, want, tol), [&] {
-            return show(r) + side + " should hit " + describe(k) + " at t = " + num(want) + " ± " + num(tol) +
-                   "; yours returned " + show(i, &tri);
-        });
+        check_hit_at(t, i, tri, r, want, tol, [&] { return describe(k); }, side);
     } else {
         t.check(clean_miss(i), [&] {
             return show(r) + side + " should miss " + describe(k) +
@@ -109,13 +106,7 @@ void check_same_triangle(tally& t, const rtab_component& got, const primitive& w
         const triangle_answer exact = triangle_oracle(k.a, k.b, k.c, r);
         if (std::fabs(static_cast<double>(exact.min_weight())) < 1e-6) continue;
         const intersection i = got.intersect(r), w = want.intersect(r);
-        const double tol = tolerance_of(k, r, w.t) + slack;
-        const bool same = (i.hit() && w.hit() && std::fabs(i.t - w.t) <= tol && i.object == &got) ||
-                          (clean_miss(i) && clean_miss(w));
-        t.check(same, [&] {
-            return show(r) + ": " + who + " returned " + show(i, &got) + " where the triangle returned " + show(w, &want) +
-                   " (± " + num(tol) + ")";
-        });
+        check_same_answer(t, r, got, i, want, w, tolerance_of(k, r, w.t) + slack, who, "triangle");
     }
 }
 
@@ -206,18 +197,9 @@ TEST_CASE("triangle: rays exactly parallel to a triangle or lying in its plane m
     tally t("rays parallel to a triangle");
     const corners k{point(-1, -1, 2), point(3, 0, 2), point(0, 4, 2)};
     const auto tri = make_triangle(k.a, k.b, k.c);
-    for (const vector d : {vector(1, 0.5, 0), vector(-1, 0, 0), vector(0.2, -1, 0), vector(1, 1, 0)}) {
-        for (const double z : {2.0, 2 + 1e-9, 2 - 1e-9, 7.0}) {
-            // Starting outside and crossing the triangle's outline, and starting inside it.
-            for (const ray& r : {ray(point(0.5, 0.8, z) - 10 * d.unit(), d), ray(point(0.5, 0.8, z), d)}) {
-                const intersection i = tri->intersect(r);
-                t.check(clean_miss(i), [&] {
-                    return show(r) + " runs parallel to " + describe(k) + (z == 2 ? " in its plane" : "") +
-                           ": it should miss; yours returned " + show(i, tri.get());
-                });
-            }
-        }
-    }
+    check_parallel_rays_miss(t, *tri, describe(k), point(0.5, 0.8, 2), vector(0, 0, 1),
+                             {vector(1, 0.5, 0), vector(-1, 0, 0), vector(0.2, -1, 0), vector(1, 1, 0)},
+                             {0.0, 1e-9, -1e-9, 5.0});
     t.report();
 }
 
@@ -237,18 +219,8 @@ TEST_CASE("triangle: rays leaving a point of the triangle never hit it again, wh
                 double a = random.uniform(0, 1), b = random.uniform(0, 1);
                 if (a + b > 1) a = 1 - a, b = 1 - b;
                 const point on = at(k, a, b);
-                vector d = random.direction();
-                if (j % 2 == 0) {
-                    const double angle = std::pow(10.0, random.uniform(-5, -1)) * (j % 4 == 0 ? 1 : -1);
-                    const double turn = random.uniform(0, 2 * std::numbers::pi);
-                    d = std::cos(angle) * (std::cos(turn) * u + std::sin(turn) * v) + std::sin(angle) * n;
-                }
-                const ray r(on, d);
-                const intersection i = tri->intersect(r);
-                t.check(clean_miss(i), [&] {
-                    return show(r) + " starts on " + describe(k) + " (zero_t = " + num(tri->zero_t()) +
-                           "): it should not hit it again; yours returned " + show(i, tri.get());
-                });
+                const vector d = leaving_direction(random, j, n, u, v, -5);
+                check_leaving_misses(t, *tri, ray(on, d), tri->zero_t(), [&] { return describe(k); });
             }
         }
     }
@@ -294,10 +266,7 @@ TEST_CASE("triangle: a huge triangle seen from just above keeps the digits of th
         const ray r(origin, d);
         const double want = static_cast<double>(triangle_oracle(k.a, k.b, k.c, r).t), tol = 1e-8 * want;
         const intersection i = ground->intersect(r);
-        t.check(hit_near(i, ground.get(), want, tol), [&] {
-            return show(r) + " should hit " + describe(k) + " at t = " + num(want) + " ± " + num(tol) + "; yours returned " +
-                   show(i, ground.get());
-        });
+        check_hit_at(t, i, *ground, r, want, tol, [&] { return describe(k); });
     }
     t.report();
 }

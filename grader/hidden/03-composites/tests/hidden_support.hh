@@ -51,7 +51,9 @@ namespace vl::stage03::hidden {
 using grading::full_precision_surface;
 using grading::num;
 using grading::real;
+using grading::roots;
 using grading::rvec;
+using grading::sphere_roots;
 using grading::show;
 using grading::surface_of;
 using grading::surface_text;
@@ -80,29 +82,6 @@ inline double round_up(real x) {
     double d = static_cast<double>(x);
     if (static_cast<real>(d) < x) d = std::nextafter(d, std::numeric_limits<double>::infinity());
     return d;
-}
-
-/// The long-double roots t0 <= t1 of the ray's line with a sphere (the direction made
-/// unit in long double); `meets` is false when the line passes beside it.
-struct roots {
-    bool meets = false;
-    real t0 = 0, t1 = 0;
-};
-inline roots sphere_roots(const rvec& o, const rvec& d, const rvec& c, real radius) {
-    const rvec f = o - c;
-    const real b = dot(f, d);
-    const rvec l = f - b * d;
-    const real disc = (radius - len(l)) * (radius + len(l));
-    roots out;
-    if (disc < 0) return out;
-    const real q = -(b + std::copysign(std::sqrt(disc), b));
-    const real cc = (len(f) - radius) * (len(f) + radius);
-    real t0 = q == 0 ? 0 : cc / q, t1 = q;
-    if (t0 > t1) std::swap(t0, t1);
-    out.meets = true;
-    out.t0 = t0;
-    out.t1 = t1;
-    return out;
 }
 
 /// The first root beyond `eps` (0 when none).

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "02-sphere/tests/test_support.hh"
+#include "04-shading/tests/test_support.hh"
 #include "grading.hh"
 #include "long_double.hh"
 #include "stage_04.hh"
@@ -87,24 +88,11 @@ inline bool same(const color& got, const color& want, double tol) {
 // --- Fresnel, both ways -----------------------------------------------------------------------
 
 /// The reflectance where a ray in a medium of index eta1 meets one of index eta2, with
-/// `cos_i` the cosine of its angle of incidence; 1 for total internal reflection.
-/// Schlick's approximation with the cosine on the side of the lower index.
-inline real schlick(real eta1, real eta2, real cos_i) {
-    const real eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
-    if (k < 0) return 1;
-    const real cos_t = std::sqrt(k), r0 = ((eta1 - eta2) / (eta1 + eta2)) * ((eta1 - eta2) / (eta1 + eta2));
-    const real c = eta1 <= eta2 ? cos_i : cos_t;
-    return r0 + (1 - r0) * std::pow(1 - c, 5);
-}
-/// The exact Fresnel equations for unpolarised light.
-inline real fresnel_exact(real eta1, real eta2, real cos_i) {
-    const real eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
-    if (k < 0) return 1;
-    const real cos_t = std::sqrt(k);
-    const real rs = (eta1 * cos_i - eta2 * cos_t) / (eta1 * cos_i + eta2 * cos_t);
-    const real rp = (eta1 * cos_t - eta2 * cos_i) / (eta1 * cos_t + eta2 * cos_i);
-    return (rs * rs + rp * rp) / 2;
-}
+/// `cos_i` the cosine of its angle of incidence; 1 for total internal reflection: Schlick's
+/// approximation with the cosine on the side of the lower index, and the exact Fresnel
+/// equations for unpolarised light (the public tests' formulas, in long double).
+inline real schlick(real eta1, real eta2, real cos_i) { return testing::schlick<real>(eta1, eta2, cos_i); }
+inline real fresnel_exact(real eta1, real eta2, real cos_i) { return testing::fresnel_exact<real>(eta1, eta2, cos_i); }
 /// What the contract accepts for F: anything between Schlick's value and the exact one,
 /// widened by 0.02 on each side.
 struct band {
@@ -153,6 +141,11 @@ inline surface make_surface(const color& c, double kdr, double ksr = 0, double k
 }
 /// An emitter of colour `c`: under ambient (1, 1, 1) and no lights it returns exactly `c`.
 inline surface emitter(const color& c) { return make_surface(c, 1); }
+/// Glass of index `ior`: no diffuse part, `ksr` and `kst` as given (a clear pane by
+/// default), in colour `c`.
+inline surface glass(double ior, double ksr = 0, double kst = 1, const color& c = color(1, 1, 1)) {
+    return make_surface(c, 0, ksr, kst, 1, ior);
+}
 
 /// Every surface value in words, for messages.
 /// The surface in words: its colour and kdr, and each other value that is not the default.
@@ -550,6 +543,12 @@ struct bench {
                " degrees from the normal (no lights, ambient 1; " + layout + ")";
     }
 };
+
+/// Asks `b` for its patch where `r`'s transmitted ray lands (bench::patch()) and checks
+/// that it could be placed.
+inline bool placed_patch(tally& t, bench& b, const ray& r, const color& c = color(0, 1, 0)) {
+    return t.check(b.patch(r, c), [] { return std::string("the test's patch could not be placed"); });
+}
 
 /// A band scaled by `k` >= 0 and widened by `tol`.
 inline band scaled(const band& b, real k, real tol = 1e-9L) { return {b.lo * k - tol, b.hi * k + tol}; }

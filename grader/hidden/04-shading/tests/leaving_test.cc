@@ -32,10 +32,6 @@ using namespace vl::stage04::hidden;
 
 namespace {
 
-surface glass(double ior, double ksr = 0, double kst = 1, const color& c = color(1, 1, 1)) {
-    return make_surface(c, 0, ksr, kst, 1, ior);
-}
-
 /// The critical angle of glass of index `ior`, in radians.
 real critical(real ior) { return std::asin(1 / ior); }
 
@@ -149,7 +145,7 @@ TEST_CASE("leaving: just below the critical angle F uses the cosine on the lower
         for (const real below : {0.25L, 0.5L, 1.0L, 2.0L}) {
             bench b(glass(ior), true);
             const ray r = b.at_angle(critical(ior) - radians(below), 0.3L);
-            if (!t.check(b.patch(r), [] { return std::string("the test's patch could not be placed"); })) continue;
+            if (!placed_patch(t, b, r)) continue;
             const band f = fresnel_band(ior, 1, b.cos_i(r));
             check_transmitted_weight(t, b, r, 3, transmitted_weight(f, 1),
                                      "leaving glass " + num(static_cast<double>(below)) +
@@ -167,7 +163,7 @@ TEST_CASE("leaving: near normal incidence from inside F = R0 and the transmitted
             const double ksr = weights.first, kst = weights.second;
             bench b(glass(ior, ksr, kst), true);
             const ray r = b.at_angle(radians(3.0L), 0.9L);
-            if (!t.check(b.patch(r), [] { return std::string("the test's patch could not be placed"); })) continue;
+            if (!placed_patch(t, b, r)) continue;
             const real r0 = ((ior - 1.0L) / (ior + 1.0L)) * ((ior - 1.0L) / (ior + 1.0L));
             const real s = schlick(ior, 1, b.cos_i(r)), e = fresnel_exact(ior, 1, b.cos_i(r));
             check_transmitted_weight(t, b, r, 3, transmitted_weight({std::min(s, e) - 1e-6L, std::max(s, e) + 1e-6L}, kst),
@@ -188,7 +184,7 @@ TEST_CASE("leaving: on either side of the critical angle light gets out below it
                                                                 "reflection, all the light comes back");
             bench u(glass(ior), true);
             const ray under = u.at_angle(critical(ior) - radians(step), 1.3L);
-            if (!t.check(u.patch(under), [] { return std::string("the test's patch could not be placed"); })) continue;
+            if (!placed_patch(t, u, under)) continue;
             const band f = fresnel_band(ior, 1, u.cos_i(under));
             check_transmitted_weight(t, u, under, 3, transmitted_weight(f, 1),
                                      num(static_cast<double>(step)) + " degrees below the critical angle: some light "

@@ -29,10 +29,6 @@ using namespace vl::stage04::hidden;
 
 namespace {
 
-surface glass(double ior, double ksr = 0, double kst = 1, const color& c = color(1, 1, 1)) {
-    return make_surface(c, 0, ksr, kst, 1, ior);
-}
-
 /// Checks that among the watcher's rays there is one from (about) `p` along `want`; when
 /// `inside_of` is given, that ray must start inside it.
 void check_transmitted(tally& t, const std::vector<ray>& log, const rvec& p, const rvec& want, const std::string& asked,
@@ -96,7 +92,7 @@ TEST_CASE("refraction: the transmitted ray lands where Snell's law says, on a sm
         for (const real deg : {20.0L, 40.0L, 55.0L}) {
             bench b(glass(ior), false);
             const ray r = b.at_angle(radians(deg));
-            if (!t.check(b.patch(r), [] { return std::string("the test's patch could not be placed"); })) continue;
+            if (!placed_patch(t, b, r)) continue;
             check_transmitted_weight(t, b, r, 3, transmitted_weight(fresnel_band(1, ior, b.cos_i(r)), 1),
                                      "by Snell's law the transmitted ray reaches the patch");
         }
@@ -136,7 +132,7 @@ TEST_CASE("refraction: near normal incidence F = R0 = ((ior - 1) / (ior + 1))^2"
     for (const double ior : {1.2, 1.33, 1.5, 2.0, 2.4}) {
         bench b(glass(ior), false);
         const ray r = b.at_angle(radians(near_normal), 0.4L);
-        if (!t.check(b.patch(r), [] { return std::string("the test's patch could not be placed"); })) continue;
+        if (!placed_patch(t, b, r)) continue;
         const real r0 = ((ior - 1.0L) / (ior + 1.0L)) * ((ior - 1.0L) / (ior + 1.0L));
         check_transmitted_weight(t, b, r, 3, transmitted_weight(tight_fresnel(1, ior, b.cos_i(r)), 1),
                                  num(static_cast<double>(near_normal)) + " degrees from the normal F = R0 = " +
@@ -151,7 +147,7 @@ TEST_CASE("refraction: towards 90 degrees from the normal F goes to 1", "[04][re
         for (const real deg : {88.0L, 89.5L, 89.9L}) {
             bench b(glass(ior), false);
             const ray r = b.at_angle(radians(deg));
-            if (!t.check(b.patch(r), [] { return std::string("the test's patch could not be placed"); })) continue;
+            if (!placed_patch(t, b, r)) continue;
             const band f = fresnel_band(1, ior, b.cos_i(r));
             check_transmitted_weight(t, b, r, 3, transmitted_weight(f, 1),
                                      "nearly all the light is reflected: F " + f.words() + ", little is transmitted");
@@ -170,7 +166,7 @@ TEST_CASE("refraction: glass with both ksr and kst transmits kst (1 - F), and w_
             {
                 bench b(glass(ior, ksr, kst), false);
                 const ray straight = b.at_angle(radians(near_normal), 2.0L);
-                if (t.check(b.patch(straight), [] { return std::string("the test's patch could not be placed"); }))
+                if (placed_patch(t, b, straight))
                     check_transmitted_weight(t, b, straight, 3,
                                              transmitted_weight(tight_fresnel(1, ior, b.cos_i(straight)), kst),
                                              "near the normal F = R0 = " + num(static_cast<double>(r0)));
@@ -179,7 +175,7 @@ TEST_CASE("refraction: glass with both ksr and kst transmits kst (1 - F), and w_
                 bench b(glass(ior, ksr, kst), false);
                 const ray slant = b.at_angle(radians(70.0L), 1.0L);
                 const band f = fresnel_band(1, ior, b.cos_i(slant));
-                if (t.check(b.patch(slant), [] { return std::string("the test's patch could not be placed"); }))
+                if (placed_patch(t, b, slant))
                     check_transmitted_weight(t, b, slant, 3, transmitted_weight(f, kst), "F " + f.words());
             }
             {
@@ -199,7 +195,7 @@ TEST_CASE("refraction: the surface colour filters the transmitted light", "[04][
         bench b(glass(1.5, 0, 1, c), false);
         const ray r = b.at_angle(radians(near_normal), 1.0L);
         const color below(0.25, 0.5, 1);
-        if (!t.check(b.patch(r, below), [] { return std::string("the test's patch could not be placed"); })) continue;
+        if (!placed_patch(t, b, r, below)) continue;
         traced seen;
         if (!emitter_shows(t, b.w.s, b.at_patch(), &color::b, "the patch " + show(below), seen)) continue;
         const band f = tight_fresnel(1, 1.5, b.cos_i(r));
@@ -227,7 +223,7 @@ TEST_CASE("refraction: at oblique angles F is between Schlick's approximation an
         for (const real deg : {30.0L, 45.0L, 60.0L, 75.0L}) {
             bench b(glass(ior), false);
             const ray r = b.at_angle(radians(deg), 0.5L);
-            if (!t.check(b.patch(r), [] { return std::string("the test's patch could not be placed"); })) continue;
+            if (!placed_patch(t, b, r)) continue;
             const band f = fresnel_band(1, ior, b.cos_i(r));
             check_transmitted_weight(t, b, r, 3, transmitted_weight(f, 1),
                                      "entering glass, Schlick's F uses cos_i: F " + f.words());
