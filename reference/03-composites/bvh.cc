@@ -315,8 +315,7 @@ private:
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_bvh(int leaf_size) {
-    shapes::bvh_base::check_leaf_size(leaf_size);
-    return std::make_unique<bvh>(leaf_size);
+    return shapes::bvh_base::make<bvh>(leaf_size);
 }
 
 }  // namespace vl::stage03
