@@ -19,12 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void replace_all(std::string& s, const std::string& from, const std::string& to) {
-    if (from.empty()) return;
-    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
-        s.replace(at, from.size(), to);
-}
-
 std::string stem_of(const std::string& file) { return fs::path(file).stem().string(); }
 
 bool is_regular(const fs::path& p) {
@@ -87,69 +81,6 @@ void collect_protected(const installation& in, const stage_info& stage, const st
 }
 
 }  // namespace
-
-std::string trim_compiler_errors(const std::string& log, int max_lines) {
-    std::vector<std::string> lines;
-    std::istringstream in(log);
-    for (std::string line; std::getline(in, line);) {
-        replace_all(line, "/submission/", "");
-        replace_all(line, "/vl/framework/", "<framework>/");
-        replace_all(line, "/vl/contract/", "<contract>/");
-        replace_all(line, "/out/", "");
-        lines.push_back(line);
-    }
-    std::size_t first = 0;
-    while (first < lines.size() && lines[first].find("error") == std::string::npos) ++first;
-    if (first == lines.size()) first = 0;
-    // Keep the "In function ..." line that names where the error is.
-    if (first > 0 && lines[first - 1].find("In ") != std::string::npos) --first;
-    std::string out;
-    const std::size_t last = std::min(lines.size(), first + static_cast<std::size_t>(max_lines));
-    for (std::size_t k = first; k < last; ++k) out += lines[k] + "\n";
-    if (last < lines.size()) out += "[... " + std::to_string(lines.size() - last) + " more lines]\n";
-    return out;
-}
-
-/// `errors` with, first, a note for each contract header the student had changed: the
-/// grader used the original, which is often why their code no longer compiles or links.
-std::string with_contract_note(const prepared_submission& sub, std::string errors) {
-    for (const std::string& h : sub.replaced_contracts)
-        errors = "note: your " + h + " differs from the original, and the original was used (the grader always "
-                 "uses the contract as handed out). If the errors below are about something you declared or "
-                 "changed in " + h + ", move it into your own .cc or .hh files.\n\n" + errors;
-    return errors;
-}
-
-std::string explain_link_errors(const std::string& log) {
-    std::set<std::string> missing, twice;
-    std::vector<std::string> other;
-    std::istringstream in(log);
-    for (std::string line; std::getline(in, line);) {
-        for (const auto& [marker, into] : {std::pair<const char*, std::set<std::string>*>{"undefined reference to ", &missing},
-                                           {"multiple definition of ", &twice}}) {
-            const auto at = line.find(marker);
-            if (at == std::string::npos) continue;
-            std::string symbol = line.substr(at + std::string(marker).size());
-            if (symbol.size() >= 2 && (symbol.front() == '`' || symbol.front() == '\'')) symbol = symbol.substr(1);
-            if (const auto end = symbol.rfind('\''); end != std::string::npos) symbol.erase(end);
-            into->insert(symbol);
-        }
-        if (line.find("error:") != std::string::npos && line.find("collect2") == std::string::npos &&
-            line.find("ld returned") == std::string::npos && line.find("/vl/prebuilt") == std::string::npos)
-            other.push_back(line);
-    }
-    std::string out = "your code does not link with the tests and the framework:\n";
-    for (const std::string& s : missing) out += "  missing: " + s + " (declared, but your files do not define it)\n";
-    for (const std::string& s : twice)
-        out += "  defined twice: " + s + " (define it once, in one .cc file, or make it inline or static)\n";
-    for (std::size_t k = 0; k < other.size() && k < 10; ++k) {
-        std::string l = other[k];
-        replace_all(l, "/in/", "");
-        out += "  " + l + "\n";
-    }
-    if (missing.empty() && twice.empty() && other.empty()) out += "  (the linker gave no reason a student can act on)\n";
-    return out;
-}
 
 /// The flags of every compile of a stage's code: the main build's code generation, plus
 /// at most 50 errors and constexpr evaluation cut at 10^8 operations (GCC's default, 2^33,
@@ -423,7 +354,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         const run_result r = run(rq, caps);
         if (!r.started) throw grader_error("the sandbox could not run the linker: " + r.error);
         if (!r.succeeded())
-            b.errors += r.timed_out ? "linking " + r.describe(rq.limits.wall_seconds) + "\n" : explain_link_errors(r.output);
+            b.errors += r.timed_out ? "linking " + r.describe(rq.limits.wall_seconds) + "\n" : explain_link_errors(r.output, sub.files);
         return r.succeeded() && is_regular(bin / program);
     };
     const bool tests_ok = hidden.empty() || link("hidden_tests", hidden, true);

@@ -64,8 +64,13 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
 /// `max_lines` lines.
 std::string trim_compiler_errors(const std::string& log, int max_lines = 30);
 
+/// `errors` with, first, a note for each contract header the student had changed: the
+/// grader used the original, which is often why their code no longer compiles or links.
+std::string with_contract_note(const prepared_submission& sub, std::string errors);
+
 /// What a failed link says, in terms a student can act on: the missing and the doubly
-/// defined symbols, never the paths or names of the grader's parts.
-std::string explain_link_errors(const std::string& log);
+/// defined symbols (with which of `files`, the submission's .cc files, define them), never
+/// the paths or names of the grader's parts.
+std::string explain_link_errors(const std::string& log, const std::vector<std::string>& files);
 
 }  // namespace vl::grader
