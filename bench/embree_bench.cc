@@ -16,10 +16,12 @@
 //   - how many closest hits agree (the same primitive, t within 1e-5 relative, or both
 //     miss), and how many are of the same primitive (or both miss) whatever their t.
 //
-//   embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh] [--repeat R]
+//   embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh] [--kinds primary,incoherent]
+//                [--repeat R]
 //
-// N rays of each kind (primary: the nearest square, default 1000 x 1000); R passes of each
-// trace, the fastest reported (default 1). Build the release preset to run it.
+// N rays of each kind (primary: the nearest square, default 1000 x 1000); only the kinds
+// named (default both, so that a profile can take one); R passes of each trace, the
+// fastest reported (default 1). Build the release preset to run it.
 #include <malloc.h>
 
 #include <algorithm>
@@ -158,6 +160,7 @@ bool agree(const hit_record& a, const hit_record& b) {
 struct options {
     std::size_t rays = 1000000;
     std::vector<std::string> scenes{"spheres-100k", "spheres-1m", "mesh"};
+    std::vector<std::string> kinds{"primary", "incoherent"};
     int repeat = 1;
 };
 
@@ -173,15 +176,22 @@ options parse(int argc, char** argv) {
             o.rays = std::stoul(value());
         } else if (a == "--repeat") {
             o.repeat = std::max(1, std::stoi(value()));
-        } else if (a == "--scenes") {
-            o.scenes.clear();
+        } else if (a == "--scenes" || a == "--kinds") {
+            std::vector<std::string>& names = a == "--scenes" ? o.scenes : o.kinds;
+            names.clear();
             std::istringstream list(value());
-            for (std::string name; std::getline(list, name, ',');) o.scenes.push_back(name);
+            for (std::string name; std::getline(list, name, ',');) names.push_back(name);
         } else {
-            throw std::runtime_error("usage: embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh] [--repeat R]");
+            throw std::runtime_error(
+                "usage: embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh] [--kinds primary,incoherent] "
+                "[--repeat R]");
         }
     }
     if (o.rays == 0) throw std::runtime_error("--rays must be at least 1");
+    for (const std::string& kind : o.kinds) {
+        if (kind != "primary" && kind != "incoherent")
+            throw std::runtime_error("no kind of rays '" + kind + "' (primary, incoherent)");
+    }
     return o;
 }
 
@@ -208,7 +218,7 @@ void run_scene(const std::string& name, const options& o) {
     embree_scene emb(s);
     const double emb_build = fastest(1, [&] { emb.commit(); });
 
-    for (const char* kind : {"primary", "incoherent"}) {
+    for (const std::string& kind : o.kinds) {
         const std::vector<ray_f>& rays = ray_sets.at(kind);
         std::vector<vl::ray> vl_rays;
         vl_rays.reserve(rays.size());
@@ -226,7 +236,7 @@ void run_scene(const std::string& name, const options& o) {
         std::vector<RTCRayHit> emb_hits;
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
-        context.flags = std::string(kind) == "primary" ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+        context.flags = kind == "primary" ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
                                                        : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
         double emb_s = INFINITY;
         for (int k = 0; k < o.repeat; ++k) {
@@ -245,14 +255,14 @@ void run_scene(const std::string& name, const options& o) {
             emb_hit_count += b.id.hit();
         }
         const double ref_mrays = rays.size() / ref_s / 1e6, emb_mrays = rays.size() / emb_s / 1e6;
-        std::printf("scene=%s rays=%s reference_mrays=%.3g embree_mrays=%.3g ratio=%.3g\n", name.c_str(), kind,
+        std::printf("scene=%s rays=%s reference_mrays=%.3g embree_mrays=%.3g ratio=%.3g\n", name.c_str(), kind.c_str(),
                     ref_mrays, emb_mrays, ref_mrays / emb_mrays);
         const double passes = double(o.repeat) * double(rays.size());
-        std::printf("scene=%s rays=%s reference_per_ray: box_tests=%.3g child_tests=%.3g\n", name.c_str(), kind,
+        std::printf("scene=%s rays=%s reference_per_ray: box_tests=%.3g child_tests=%.3g\n", name.c_str(), kind.c_str(),
                     double(cost.bounding_volume_tests) / passes,
                     double(cost.primitive_tests + cost.composite_tests) / passes - 1);
         std::printf("scene=%s rays=%s count=%zu agree=%zu same_primitive=%zu reference_hits=%zu embree_hits=%zu\n",
-                    name.c_str(), kind, rays.size(), agreeing, same_primitive, ref_hit_count, emb_hit_count);
+                    name.c_str(), kind.c_str(), rays.size(), agreeing, same_primitive, ref_hit_count, emb_hit_count);
         std::fflush(stdout);
     }
     std::printf("scene=%s build reference_s=%.3g embree_s=%.3g ratio=%.3g\n", name.c_str(), ref_build, emb_build,

@@ -203,9 +203,10 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 /// Hierarchies", 2007): the expected cost of a split into A and B is proportional to
 /// area(A)·count(A) + area(B)·count(B); sort or bin the children by box centre along
 /// an axis and take the cheapest split. (The reference puts the centres in 32 bins per
-/// axis and weighs entering a node as its two box tests. A sweep over every split of the
-/// sorted children, or a split at the median of the longest axis, also meets the budgets;
-/// the budgets, not the method, are graded.) A node of more than `leaf_size` children is always
+/// axis and weighs entering a node as its two box tests, then collapses the binary tree
+/// into one of four subtrees per node, whose four boxes it tests at once. A sweep over
+/// every split of the sorted children, or a split at the median of the longest axis, also
+/// meets the budgets; the budgets, not the method or the tree's width, are graded.) A node of more than `leaf_size` children is always
 /// split, one of at most `leaf_size` becomes a leaf unless a split is cheaper. Many children with
 /// the same centre must still give a tree (split them by count), never an endless split.
 ///

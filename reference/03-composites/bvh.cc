@@ -14,8 +14,10 @@
 // writing, building once at the first ray) is vl::shapes::bvh_base.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "stage_03.hh"
@@ -60,16 +62,27 @@ struct box3 {
     }
 };
 
+/// The next float above `f`, one step of its bits (pbrt-v4's NextFloatUp, 6.8.1): what
+/// std::nextafter(f, INFINITY) gives for every float but NaN, without a library call,
+/// since a ray rounds its origin with it.
+float next_float_up(float f) {
+    if (f == INFINITY) return f;
+    if (f == 0) return std::numeric_limits<float>::denorm_min();  // from +0 and -0 alike
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0 ? bits + 1 : bits - 1);
+}
+float next_float_down(float f) { return -next_float_up(-f); }
+
 /// The float nearest `x` on the side away from the box's inside, so that a float box
 /// always contains the double box it stands for (the round trip through float would
 /// otherwise move a face inwards by up to half a float step).
 float round_down(double x) {
     const auto f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+    return static_cast<double>(f) > x ? next_float_down(f) : f;
 }
 float round_up(double x) {
     const auto f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+    return static_cast<double>(f) < x ? next_float_up(f) : f;
 }
 
 /// Four floats that the compiler keeps in one SSE register (a GCC and Clang vector
@@ -90,22 +103,23 @@ constexpr float far_stretch = 1 + 4 * (3 * 0x1p-24f / (1 - 3 * 0x1p-24f));
 /// it comes out no larger than the exact one, the far distance from the one rounded the
 /// other way, so the origin's rounding to float never moves a face across it. A zero
 /// direction component has the reciprocal +-infinity (as does one below 3e-39 in
-/// magnitude, whose reciprocal no float holds), which the slab test handles.
+/// magnitude, whose reciprocal no float holds), which the slab test handles. Each value
+/// is held in all four lanes, ready for a node's four boxes.
 struct slab_ray {
-    float origin_near[3], origin_far[3], inverse[3];
+    float4 origin_near[3], origin_far[3], inverse[3];
     int first_face[3];
     explicit slab_ray(const ray& r) {
         const point& o = r.origin();
         const vector& d = r.direction();
         const double dir[3] = {d.x, d.y, d.z}, from[3] = {o.x, o.y, o.z};
         for (int k = 0; k < 3; ++k) {
-            inverse[k] = static_cast<float>(1.0 / dir[k]);
             const bool negative = std::signbit(dir[k]);
             first_face[k] = negative ? 1 : 0;
+            inverse[k] = float4{} + 1 / static_cast<float>(dir[k]);
             // (face - origin) * inverse is smallest with the origin rounded up when the
             // direction is positive, and with it rounded down when it is negative.
-            origin_near[k] = negative ? round_down(from[k]) : round_up(from[k]);
-            origin_far[k] = negative ? round_up(from[k]) : round_down(from[k]);
+            origin_near[k] = float4{} + (negative ? round_down(from[k]) : round_up(from[k]));
+            origin_far[k] = float4{} + (negative ? round_up(from[k]) : round_down(from[k]));
         }
     }
 };
@@ -153,7 +167,7 @@ private:
         int lanes() const { return 2 + !is_empty(child[2]) + !is_empty(child[3]); }
     };
     static_assert(sizeof(node) == 128);
-    static bool is_empty(const subtree& s) { return s.index == 0 && s.count == 0; }
+    static bool is_empty(const subtree& s) { return (s.index | s.count) == 0; }
 
     struct item {
         box3 bounds;
@@ -175,6 +189,10 @@ private:
             items.push_back(it);
         }
         for (const item& it : items) root_.grow(it.bounds);
+        for (int k = 0; k < 3; ++k) {
+            root_box_[0][k] = float4{round_down(root_.lo[k]), INFINITY, INFINITY, INFINITY};
+            root_box_[1][k] = float4{round_up(root_.hi[k]), -INFINITY, -INFINITY, -INFINITY};
+        }
         std::vector<binary_node> binary;
         binary.reserve(items.size());
         const subtree binary_root = build_subtree(binary, items, 0, items.size(), 0, root_);
@@ -314,74 +332,97 @@ private:
     }
 
     /// The slab test of a node's four boxes against `sr` for t in [0, t_max], lane by lane:
-    /// bit c of the result is set when the ray passes through box c, and lane c of
-    /// `t_near` is where it enters. Branch-free: the face met first comes from the
-    /// direction's sign, and the IEEE rules do the rest. A zero direction component gives
-    /// distances of +-infinity (inside the slab or never); the NaN of 0 * infinity, for an
-    /// origin on a face of such a slab, compares false and so never replaces t0 or t1: that
-    /// slab limits nothing. `t_max` is float_limit() of the best hit, so stretched already.
-    static int slabs(const node& nd, const slab_ray& sr, float t_max, float4& t_near) {
+    /// -1 in the lanes of the boxes the ray passes through, and `t_near` is where it
+    /// enters them. Branch-free: the face met first comes from the direction's sign, and
+    /// the IEEE rules do the rest. A zero direction component gives distances of
+    /// +-infinity (inside the slab or never); the NaN of 0 * infinity, for an origin on a
+    /// face of such a slab, compares false and so never replaces t0 or t1: that slab
+    /// limits nothing. `t_max` is float_limit() of the best hit, so stretched already.
+    static mask4 slabs(const float4 (&bounds)[2][3], const slab_ray& sr, float4 t_max, float4& t_near) {
         float4 t0 = {0, 0, 0, 0}, t1 = {INFINITY, INFINITY, INFINITY, INFINITY};
         for (int k = 0; k < 3; ++k) {
-            const float4 near = (nd.bounds[sr.first_face[k]][k] - sr.origin_near[k]) * sr.inverse[k];
-            const float4 far = (nd.bounds[1 - sr.first_face[k]][k] - sr.origin_far[k]) * sr.inverse[k];
+            const float4 near = (bounds[sr.first_face[k]][k] - sr.origin_near[k]) * sr.inverse[k];
+            const float4 far = (bounds[1 - sr.first_face[k]][k] - sr.origin_far[k]) * sr.inverse[k];
             t0 = near > t0 ? near : t0;
             t1 = far < t1 ? far : t1;
         }
         t1 *= far_stretch;
         t_near = t0;
-        const mask4 enters = (t0 <= t1) & (t0 <= t_max);
+        return (t0 <= t1) & (t0 <= t_max);
+    }
+
+    /// Bit c set where lane c of `enters` is true (-1): on x86 one instruction, movmskps,
+    /// which gathers the four sign bits.
+    static int lane_bits(const mask4& enters) {
+#if defined(__SSE__)
+        return __builtin_ia32_movmskps(reinterpret_cast<float4>(enters));
+#else
         return (enters[0] & 1) | (enters[1] & 2) | (enters[2] & 4) | (enters[3] & 8);
+#endif
     }
 
     intersection find_intersection(const ray& r) const override {
         ensure_built();
         if (order_.empty()) return intersection::none();
-        const point lo(root_.lo[0], root_.lo[1], root_.lo[2]), hi(root_.hi[0], root_.hi[1], root_.hi[2]);
-        ray_span span;
-        if (!hits_box(r, lo, hi, INFINITY, &span)) return intersection::none();  // counts its test
         const slab_ray sr(r);
+        float4 root_near;
+        const mask4 enters_root = slabs(root_box_, sr, float4{} + INFINITY, root_near);
+        count_bounding_volume_tests(1);
+        if (!enters_root[0]) return intersection::none();
         struct entry {
             subtree where;
             float t_near;
         };
-        // Near-first leaves at most three entries per level waiting, plus the one walked.
-        std::array<entry, 3 * max_tree_depth + 2> stack;
+        // Near-first leaves at most three entries per level waiting.
+        std::array<entry, 3 * max_tree_depth> stack;
         std::size_t top = 0;
-        stack[top++] = {root_subtree_, static_cast<float>(span.t_near)};
         std::uint64_t box_tests = 0;
         intersection best = intersection::none();
-        float t_max = INFINITY;  // float_limit(best.t) once there is a best hit
-        while (top > 0) {
-            const entry e = stack[--top];
-            if (e.t_near > t_max) continue;  // its box starts beyond the best hit
-            if (e.where.count > 0) {  // a leaf
-                for (std::uint32_t k = e.where.index; k < e.where.index + e.where.count; ++k) {
+        float4 t_max = float4{} + INFINITY;  // float_limit(best.t) once there is a best hit
+        subtree where = root_subtree_;       // the subtree walked now
+        while (true) {
+            if (where.count > 0) {  // a leaf
+                for (std::uint32_t k = where.index; k < where.index + where.count; ++k) {
                     const intersection i = order_[k]->intersect(r);
                     if (i.nearer_than(best)) best = i;
                 }
-                if (best.hit()) t_max = float_limit(best.t);
-                continue;
+                if (best.hit()) t_max = float4{} + float_limit(best.t);
+            } else {
+                const node& nd = nodes_[where.index];
+                float4 t_near;
+                const int enters = lane_bits(slabs(nd.bounds, sr, t_max, t_near));
+                box_tests += static_cast<std::uint64_t>(nd.lanes());
+                if (enters != 0) {
+                    // Walk the nearest entered subtree next. The others wait on the stack,
+                    // farthest at the bottom (an insertion sort of at most three), so that
+                    // the nearest of them comes off first.
+                    const std::size_t first = top;
+                    entry nearest{{0, 0}, INFINITY};  // none yet: the first lane entered replaces it
+                    for (int c = 0; c < 4; ++c) {
+                        if (!(enters >> c & 1)) continue;
+                        entry other{nd.child[c], t_near[c]};
+                        if (other.t_near <= nearest.t_near) std::swap(other, nearest);
+                        if (is_empty(other.where)) continue;  // that was the first lane entered
+                        std::size_t at = top++;
+                        for (; at > first && stack[at - 1].t_near < other.t_near; --at) stack[at] = stack[at - 1];
+                        stack[at] = other;
+                    }
+                    where = nearest.where;
+                    continue;
+                }
             }
-            const node& nd = nodes_[e.where.index];
-            float4 t_near;
-            const int enters = slabs(nd, sr, t_max, t_near);
-            box_tests += static_cast<std::uint64_t>(nd.lanes());
-            // Push the entered subtrees farthest first, so that the nearest is walked next:
-            // an insertion sort of at most four, by the distance where the ray enters.
-            std::size_t first = top;
-            for (int c = 0; c < 4; ++c) {
-                if (!(enters >> c & 1)) continue;
-                std::size_t at = top++;
-                for (; at > first && stack[at - 1].t_near < t_near[c]; --at) stack[at] = stack[at - 1];
-                stack[at] = {nd.child[c], t_near[c]};
-            }
+            // Nothing below to walk: take the nearest waiting subtree whose box starts
+            // before the best hit; those beyond it are dropped.
+            while (top > 0 && stack[top - 1].t_near > t_max[0]) --top;
+            if (top == 0) break;
+            where = stack[--top].where;
         }
         count_bounding_volume_tests(box_tests);
         return best.hit() ? best : intersection::composite_only(this);
     }
 
     mutable box3 root_;                                 // the children's box, exactly
+    mutable float4 root_box_[2][3];  // root_ rounded outwards in lane 0, as a node's boxes; lanes 1 to 3 empty
     mutable subtree root_subtree_{};                   // the root: nodes_[0], or one leaf
     mutable std::vector<node> nodes_;                  // the inner nodes, parent first (built by ensure_built)
     mutable std::vector<const rtab_component*> order_;  // the children as the leaves hold them
