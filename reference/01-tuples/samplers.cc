@@ -4,7 +4,6 @@
 // Based Rendering*, 4th ed., §8.5.
 #include <algorithm>
 #include <bit>
-#include <cmath>
 
 #include "stage_01.hh"
 #include "vl/random.hh"
@@ -13,11 +12,11 @@ namespace vl::stage01 {
 
 namespace {
 
-/// The side k of the smallest k x k grid with at least n cells.
+/// The side k of the smallest k x k grid with at least n cells: counted up, exact and
+/// without a square root (a pattern asks for it once per pixel, and k is small).
 std::size_t grid_side(std::size_t n) {
-    auto k = static_cast<std::size_t>(std::sqrt(static_cast<double>(n)));
-    while (k * k < n) ++k;  // exact, whatever sqrt rounded to
-    while (k > 0 && (k - 1) * (k - 1) >= n) --k;
+    std::size_t k = 0;
+    while (k * k < n) ++k;
     return k;
 }
 
@@ -59,18 +58,29 @@ public:
     void offsets(std::span<sample_offset> out, std::uint64_t seed) const override {
         const std::size_t k = grid_side(out.size());
         const double side = static_cast<double>(k);
-        auto place = [&](std::size_t i, double jx, double jy) {
-            const double cx = static_cast<double>(i % k), cy = static_cast<double>(i / k);
-            out[i] = {below((cx + jx) / side, (cx + 1) / side), below((cy + jy) / side, (cy + 1) / side)};
+        // Where cell coordinate c (0 to k - 1) plus j (in [0, 1)) falls, in [0, 1). For a
+        // power-of-two k, 1 / k and every product with it are exact, so multiplying gives
+        // the very double the division gives, without the division's cost.
+        const bool exact_inverse = std::has_single_bit(k);
+        const double inverse = 1 / side;
+        auto along = [&](double c, double j) {
+            return exact_inverse ? below((c + j) * inverse, (c + 1) * inverse) : below((c + j) / side, (c + 1) / side);
         };
+        auto place = [&](std::size_t i, std::size_t cx, std::size_t cy, double jx, double jy) {
+            out[i] = {along(static_cast<double>(cx), jx), along(static_cast<double>(cy), jy)};
+        };
+        // Sample i is in cell (x, y) = (i % k, i / k), counted row by row without dividing.
         if (!jitter_) {  // nothing is drawn, so no generator is made
-            for (std::size_t i = 0; i < out.size(); ++i) place(i, 0.5, 0.5);
+            for (std::size_t i = 0, y = 0; i < out.size(); ++y)
+                for (std::size_t x = 0; x < k && i < out.size(); ++x, ++i) place(i, x, y, 0.5, 0.5);
             return;
         }
         uniform_source u(seed);
-        for (std::size_t i = 0; i < out.size(); ++i) {
-            const double jx = u();
-            place(i, jx, u());
+        for (std::size_t i = 0, y = 0; i < out.size(); ++y) {
+            for (std::size_t x = 0; x < k && i < out.size(); ++x, ++i) {
+                const double jx = u();  // x first, then y: the order of the draws is part of the image
+                place(i, x, y, jx, u());
+            }
         }
     }
 
