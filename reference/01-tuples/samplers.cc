@@ -60,16 +60,24 @@ public:
         const double side = static_cast<double>(k);
         // Where cell coordinate c (0 to k - 1) plus j (in [0, 1)) falls, in [0, 1). For a
         // power-of-two k, 1 / k and every product with it are exact, so multiplying gives
-        // the very double the division gives, without the division's cost.
-        const bool exact_inverse = std::has_single_bit(k);
-        const double inverse = 1 / side;
-        auto along = [&](double c, double j) {
-            return exact_inverse ? below((c + j) * inverse, (c + 1) * inverse) : below((c + j) / side, (c + 1) / side);
-        };
+        // the very double the division gives, without the division's cost; the choice is
+        // made once, outside the loops.
+        if (std::has_single_bit(k)) {
+            const double inverse = 1 / side;
+            place_all(out, k, seed, [inverse](double c, double j) { return below((c + j) * inverse, (c + 1) * inverse); });
+        } else {
+            place_all(out, k, seed, [side](double c, double j) { return below((c + j) / side, (c + 1) / side); });
+        }
+    }
+
+private:
+    /// Sample i in cell (x, y) = (i % k, i / k), counted row by row without dividing, at
+    /// `along(x, jx), along(y, jy)`: the cell's centre, or jittered within it.
+    template <class along_axis>
+    void place_all(std::span<sample_offset> out, std::size_t k, std::uint64_t seed, along_axis along) const {
         auto place = [&](std::size_t i, std::size_t cx, std::size_t cy, double jx, double jy) {
             out[i] = {along(static_cast<double>(cx), jx), along(static_cast<double>(cy), jy)};
         };
-        // Sample i is in cell (x, y) = (i % k, i / k), counted row by row without dividing.
         if (!jitter_) {  // nothing is drawn, so no generator is made
             for (std::size_t i = 0, y = 0; i < out.size(); ++y)
                 for (std::size_t x = 0; x < k && i < out.size(); ++x, ++i) place(i, x, y, 0.5, 0.5);
@@ -84,7 +92,6 @@ public:
         }
     }
 
-private:
     bool jitter_;
 };
 
