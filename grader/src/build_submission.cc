@@ -1,14 +1,19 @@
 #include "build_submission.hh"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <map>
 #include <mutex>
 #include <set>
 #include <sstream>
 #include <thread>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "policy.hh"
 #include "safe_files.hh"
@@ -32,10 +37,32 @@ struct prebuilt_part {
     std::string inside;
 };
 
+/// The shared libraries the stage's programs load: those of the trusted test program (or
+/// of the reference renderer), as ldd lists them.
+std::vector<std::string> shared_libraries(const installation& in, const stage_info& stage, const sandbox_capabilities& caps) {
+    run_request ldd;
+    ldd.argv = {"/usr/bin/ldd", (stage.trusted_tests.empty() ? in.reference_renderer : stage.trusted_tests).string()};
+    ldd.cwd = in.grader_build_dir.string();
+    ldd.environment = child_environment(in.grader_build_dir.string());
+    ldd.sandboxed = false;
+    ldd.limits.wall_seconds = 30;
+    const run_result libs = run(ldd, caps);
+    std::vector<std::string> shared;
+    std::istringstream lines(libs.output);
+    for (std::string line; std::getline(lines, line);) {
+        const auto arrow = line.find("=> /");
+        std::string path = arrow != std::string::npos ? line.substr(arrow + 3) : line.substr(line.find_first_not_of(" \t"));
+        path = path.substr(0, path.find(' '));
+        if (path.starts_with("/") && is_regular(fs::canonical(path))) shared.push_back(path);
+    }
+    return shared;
+}
+
 /// Every protected symbol (see check_symbols): what the parts linked with the student's
 /// code and the shared libraries it runs with define.
-void collect_protected(const installation& in, const stage_info& stage, const std::vector<prebuilt_part>& parts,
-                       const sandbox_capabilities& caps, std::set<std::string>& all, std::set<std::string>& strong) {
+void collect_protected(const installation& in, const std::vector<prebuilt_part>& parts,
+                       const std::vector<std::string>& libraries, const sandbox_capabilities& caps,
+                       std::set<std::string>& all, std::set<std::string>& strong) {
     auto nm = [&](std::vector<std::string> argv) {
         run_request rq;
         rq.argv = std::move(argv);
@@ -51,21 +78,7 @@ void collect_protected(const installation& in, const stage_info& stage, const st
     std::vector<std::string> argv = {"/usr/bin/nm", "-A", "-P", "-g", "--defined-only", "--no-sort"};
     for (const prebuilt_part& p : parts) argv.push_back(p.host.string());
     std::vector<std::string> shared = {"/usr/bin/nm", "-A", "-P", "-D", "--defined-only", "--no-sort"};
-    // The shared libraries: those the trusted test program (or the reference renderer) loads.
-    run_request ldd;
-    ldd.argv = {"/usr/bin/ldd", (stage.trusted_tests.empty() ? in.reference_renderer : stage.trusted_tests).string()};
-    ldd.cwd = in.grader_build_dir.string();
-    ldd.environment = child_environment(in.grader_build_dir.string());
-    ldd.sandboxed = false;
-    ldd.limits.wall_seconds = 30;
-    const run_result libs = run(ldd, caps);
-    std::istringstream lines(libs.output);
-    for (std::string line; std::getline(lines, line);) {
-        const auto arrow = line.find("=> /");
-        std::string path = arrow != std::string::npos ? line.substr(arrow + 3) : line.substr(line.find_first_not_of(" \t"));
-        path = path.substr(0, path.find(' '));
-        if (path.starts_with("/") && is_regular(fs::canonical(path))) shared.push_back(path);
-    }
+    shared.insert(shared.end(), libraries.begin(), libraries.end());
     // A weak copy of a shared library's C++ function in the program is normal (an inline
     // std::string member at -O0); a weak C function (open, malloc) would interpose the
     // runtime's, and a weak copy of a framework function defined out of line would take
@@ -78,6 +91,50 @@ void collect_protected(const installation& in, const stage_info& stage, const st
             const bool weak = s.type == 'W' || s.type == 'V' || s.type == 'w' || s.type == 'v' || s.type == 'u';
             if (from_static ? !weak : !name.starts_with("_Z")) strong.insert(name);
         }
+}
+
+/// `p`'s path, size, modification time and inode: what a rebuild or an upgrade changes.
+std::string file_identity(const fs::path& p) {
+    struct stat st {};
+    if (stat(p.c_str(), &st) != 0) return p.string() + " missing;";
+    char text[160];
+    std::snprintf(text, sizeof text, " %lld %lld.%09ld %llu;", static_cast<long long>(st.st_size),
+                  static_cast<long long>(st.st_mtim.tv_sec), st.st_mtim.tv_nsec, static_cast<unsigned long long>(st.st_ino));
+    return p.string() + text;
+}
+
+/// collect_protected, measured once per build: the sets are kept in
+/// build/.../grader/policy-cache/STAGE.json with the identity of every part, of the program
+/// ldd looked at and of every shared library, and measured again when any of them changes.
+void protected_symbols_of(const installation& in, const stage_info& stage, const std::vector<prebuilt_part>& parts,
+                       const sandbox_capabilities& caps, std::set<std::string>& all, std::set<std::string>& strong) {
+    const fs::path cache = in.grader_build_dir / "policy-cache" / (stage.name + ".json");
+    auto identity = [&](const std::vector<std::string>& libraries) {
+        std::string id = file_identity(stage.trusted_tests.empty() ? in.reference_renderer : stage.trusted_tests);
+        for (const prebuilt_part& p : parts) id += file_identity(p.host);
+        for (const std::string& l : libraries) id += file_identity(l);
+        return id;
+    };
+    const nlohmann::json cached = nlohmann::json::parse(read_regular_file(cache, std::size_t{64} << 20), nullptr, false);
+    try {
+        if (cached.is_object() && cached.at("identity") == identity(cached.at("libraries").get<std::vector<std::string>>())) {
+            all = cached.at("all").get<std::set<std::string>>();
+            strong = cached.at("strong").get<std::set<std::string>>();
+            return;
+        }
+    } catch (const nlohmann::json::exception&) {
+    }
+    const std::vector<std::string> libraries = shared_libraries(in, stage, caps);
+    collect_protected(in, parts, libraries, caps, all, strong);
+    // Keeping it only saves time: a build folder this user cannot write costs nothing else.
+    std::error_code ec;
+    fs::create_directories(cache.parent_path(), ec);
+    try {
+        if (!ec)
+            replace_file(cache, nlohmann::json{{"identity", identity(libraries)}, {"libraries", libraries}, {"all", all},
+                                               {"strong", strong}}.dump() + "\n");
+    } catch (const grader_error&) {
+    }
 }
 
 }  // namespace
@@ -293,7 +350,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
             parts.insert(parts.end(), renderer.begin(), renderer.end());
             parts.insert(parts.end(), group.begin(), group.end());
             parts.push_back(catch_main);
-            collect_protected(in, stage, parts, caps, protected_symbols, strong);
+            protected_symbols_of(in, stage, parts, caps, protected_symbols, strong);
             // The weaker sandbox names the headers by their host paths.
             const std::vector<std::string> trusted_headers = {
                 "/usr/", "/vl/framework/", "/vl/contract/", (in.source_dir / "framework" / "include").string() + "/",
@@ -332,6 +389,10 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         rq.mounts = {{objects, "/in", false}, {bin, "/out", true}};
         std::vector<std::string> argv = {in.cxx_compiler.string()};
         argv.insert(argv.end(), in.link_flags.begin(), in.link_flags.end());
+        // The prebuilt parts carry debug information that nothing reads in a graded program
+        // (the student's own objects have none, see compile_flags): leaving it out halves the
+        // link. A sanitizer build keeps it for its reports.
+        if (!in.sanitized) argv.push_back("-Wl,--strip-debug");
         argv.insert(argv.end(), {"-pthread", "-o", "/out/" + program});
         auto add = [&](const prebuilt_part& p) {
             rq.mounts.push_back({p.host, p.inside, false});

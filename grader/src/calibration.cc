@@ -207,6 +207,12 @@ int calibrate_command(const installation& in, arguments args) {
     std::string out = take_option(args, "--out");
     auto options = take_grade_options(args);
     options.policy = !take_flag(args, "--no-policy");
+    if (const std::string scale = take_option(args, "--limits-scale"); !scale.empty()) {
+        char* end = nullptr;
+        options.limits_scale = std::strtod(scale.c_str(), &end);
+        if (end == scale.c_str() || *end != '\0' || !(options.limits_scale > 0 && options.limits_scale <= 1))
+            throw command_line_error{"--limits-scale takes a number above 0 and at most 1, not '" + scale + "'"};
+    }
     expect_count(args, 1);
     const calibration_case c = read_case(in, args[0], options.policy ? "" : "-sandbox");
     options.budget_seconds = c.budget_seconds;

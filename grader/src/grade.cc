@@ -114,6 +114,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
 
     rubric r = load_rubric(in.hidden_dir(stage) / "rubric.toml", in.assignment_dir(stage) / "scenes", in.sanitized);
     if (options.budget_seconds > 0) r.grade_budget_seconds = options.budget_seconds;
+    r.test_limits.wall_seconds *= options.limits_scale;
+    r.render_limits.wall_seconds *= options.limits_scale;
     g.title = r.title;
     const fs::path work = options.out / "work", renders = options.out / "renders", charts = options.out / "charts";
     std::error_code ec;

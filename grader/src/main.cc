@@ -45,9 +45,11 @@ const std::vector<command>& commands() {
          "write a Gradescope autograder bundle that grades ASSIGNMENT (setup.sh builds it, run_autograder grades)",
          gradescope_command},
         {"list", "list", "the assignments this build can grade", list_command},
-        {"calibrate", "calibrate CASE_DIR [--out DIR] [--no-policy]",
+        {"calibrate", "calibrate CASE_DIR [--out DIR] [--no-policy] [--limits-scale F]",
          "grade one calibration or attack case (grader/tests/submissions/NN-name/CASE, grader/tests/adversarial/...) "
-         "and check it against its expected.toml; --no-policy tests the sandbox alone ([sandbox] in expected.toml)",
+         "and check it against its expected.toml; --no-policy tests the sandbox alone ([sandbox] in expected.toml); "
+         "--limits-scale F (0 < F <= 1) grades with the rubric's test and render time limits times F, so an endless "
+         "loop ends sooner",
          calibrate_command},
         {"calibrate-thresholds", "calibrate-thresholds ASSIGNMENT [--calibration DIR] [--renderer PATH]... [--out DIR]",
          "the FLIP spread of each hidden scene over legitimate renders (two threads, other seeds, other builds' "

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -89,7 +90,11 @@ reference_side reference_side_of(const installation& in, const stage_info& stage
     reference_side s;
     if (stage.trusted_tests.empty()) return s;  // a stage without hidden tests yet
     const std::string id = identity(stage, r);
-    const fs::path cache = in.grader_build_dir / "reference-cache" / (stage.name + ".json");
+    // One file per test time limit, so grades under scaled limits (calibrate --limits-scale)
+    // and under the rubric's do not take turns overwriting one another's.
+    std::ostringstream limit;
+    limit << r.test_limits.wall_seconds;
+    const fs::path cache = in.grader_build_dir / "reference-cache" / (stage.name + "-" + limit.str() + "s.json");
     const json cached = json::parse(read_regular_file(cache, std::size_t{64} << 20), nullptr, false);
     if (cached.is_object() && cached.value("identity", "") == id && from_json(cached, s)) {
         s.from_cache = true;

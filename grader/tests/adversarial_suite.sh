@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The adversarial suite (grader/tests/adversarial/README.md), as ctest runs it:
 #
-#   adversarial_suite.sh GRADER OUT_DIR [-j N] [CASE_DIR...]
+#   adversarial_suite.sh GRADER OUT_DIR [-j N] [-s F] [CASE_DIR...]
 #
 # Grades every attack case (or the ones named) with `grader calibrate`, which checks its
 # expected.toml (the score's range, the verdict, the results.json format), and again with
 # --no-policy when expected.toml has a [sandbox] table, so the sandbox alone must hold it.
-# N cases run at a time (default 2). Each grade has a time bound. Before and after the
+# N cases run at a time (default 2). Each grade has a time bound; with -s F, the rubric's
+# test and render time limits are scaled by F (calibrate --limits-scale). Before and after the
 # whole suite the checkout, the build tree (less the suite's own output) and /tmp (what a
 # sandbox's user owns there, and anything named for an attack) are listed (path, size,
 # mode, owner, mtime): any difference fails the suite and is shown.
@@ -15,8 +16,14 @@ set -uo pipefail
 grader=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 out=$2
 shift 2
-jobs=2
-if [ "${1:-}" = "-j" ]; then jobs=$2; shift 2; fi
+jobs=2 scale=1
+while [ $# -gt 0 ]; do
+  case $1 in
+    -j) jobs=$2; shift 2 ;;
+    -s) scale=$2; shift 2 ;;
+    *) break ;;
+  esac
+done
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 src=$(cd "$here/../.." && pwd)
 build=$(cd "$(dirname "$grader")/.." && pwd)
@@ -50,7 +57,8 @@ done
 
 # Compile the stages' caches first, so every attack is timed on its own.
 for stage in $("$grader" list | awk '{print $1}'); do
-  "$grader" calibrate "$src/grader/tests/submissions/$stage/reference" --out "$out/warm-$stage" >/dev/null 2>&1
+  "$grader" calibrate "$src/grader/tests/submissions/$stage/reference" --out "$out/warm-$stage" \
+    --limits-scale "$scale" >/dev/null 2>&1
 done
 
 manifest >"$out/manifest.before"
@@ -60,7 +68,7 @@ one() {
   name="$(basename "$(dirname "$case_dir")")/$(basename "$case_dir")${flag:+ (the sandbox alone)}"
   local dir="$out/$(basename "$(dirname "$case_dir")")-$(basename "$case_dir")${flag:+-sandbox}"
   local start=$SECONDS
-  timeout --kill-after=10 600 "$grader" calibrate "$case_dir" --out "$dir" $flag >"$dir.log" 2>&1
+  timeout --kill-after=10 600 "$grader" calibrate "$case_dir" --out "$dir" --limits-scale "$scale" $flag >"$dir.log" 2>&1
   local status=$?
   local verdict="ok"
   [ $status -eq 0 ] || verdict="FAILED"
@@ -70,7 +78,7 @@ one() {
   return $status
 }
 export -f one
-export grader out
+export grader out scale
 printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c 'one {}' >"$out/results.txt"
 status=$?
 cat "$out/results.txt"

@@ -2,12 +2,20 @@
 # grader/tests/submissions/NN-name/CASE/ is graded and checked against its expected.toml
 # (score range, the only categories allowed to lose points, whether it builds).
 #
-# Under the sanitizers, a sample: the reference, the stubs and one bug of each kind of
-# failure (wrong values, a crash, no end, no build). The sanitizers check the grader's and
-# the framework's memory use, which every grade exercises alike; what the hidden tests
-# catch is the same in both builds, and the default build grades every case.
-set(sanitizer_sample reference stubs compile-error crash-contains endless-write inside-misses camera-half-pixel
-                     inverse-no-pivoting)
+# Under the sanitizers, a sample: each stage's reference, and one case of each other kind
+# of grade (the stubs, wrong values, a crash, no end, no build). The sanitizers check the
+# grader's and the framework's memory use, which every grade exercises alike; what the
+# hidden tests catch is the same in both builds, and the default build grades every case.
+# (measures_test.sh grades 01's camera-half-pixel in both builds.)
+set(sanitizer_sample 01-tuples/reference 02-sphere/reference 03-composites/reference 04-shading/reference
+                     01-tuples/stubs 01-tuples/inverse-no-pivoting 02-sphere/inside-misses 02-sphere/crash-contains
+                     02-sphere/endless-write 02-sphere/compile-error)
+# Every case here and in the adversarial suite is graded with the rubric's test and render
+# time limits times 0.25 (calibrate --limits-scale): an endless loop then ends after 2.5 s
+# instead of 10 (a render after 7.5 s instead of 30), while the slowest test and scene of
+# the reference take about 0.3 s. A tighter limit can only fail an honest case, never pass
+# a bug, and the code that enforces the limits is the same.
+set(calibration_limits_scale 0.25)
 file(GLOB calibration_cases CONFIGURE_DEPENDS LIST_DIRECTORIES true ${CMAKE_CURRENT_LIST_DIR}/submissions/*/*)
 list(SORT calibration_cases)
 foreach(case_dir IN LISTS calibration_cases)
@@ -15,23 +23,31 @@ foreach(case_dir IN LISTS calibration_cases)
     continue()
   endif()
   get_filename_component(case_name ${case_dir} NAME)
-  if(sanitized AND NOT case_name IN_LIST sanitizer_sample)
-    continue()
-  endif()
   get_filename_component(stage_dir ${case_dir} DIRECTORY)
   get_filename_component(stage ${stage_dir} NAME)
+  if(sanitized AND NOT "${stage}/${case_name}" IN_LIST sanitizer_sample)
+    continue()
+  endif()
   if(NOT stage IN_LIST grader_stages)
     continue()
   endif()
   add_test(NAME "grader: ${stage} ${case_name}"
-           COMMAND vl_grader calibrate ${case_dir} --out ${CMAKE_CURRENT_BINARY_DIR}/calibration/${stage}/${case_name})
+           COMMAND vl_grader calibrate ${case_dir} --out ${CMAKE_CURRENT_BINARY_DIR}/calibration/${stage}/${case_name}
+                   --limits-scale ${calibration_limits_scale})
   set_tests_properties("grader: ${stage} ${case_name}" PROPERTIES LABELS grader TIMEOUT 600)
 endforeach()
 
 # The grader's own failures are its own: an --out it cannot use, no bubblewrap; and a
-# fresh 0700 mktemp folder works for every stage.
+# fresh 0700 mktemp folder works for every stage (under the sanitizers, for one: the
+# sample above grades every stage's reference).
+if(sanitized)
+  set(own_failure_stages 01-tuples)
+else()
+  set(own_failure_stages)
+endif()
 add_test(NAME "grader: its own failures exit non-zero and score no one, and any writable --out works"
-         COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/own_failures.sh $<TARGET_FILE:vl_grader> ${PROJECT_SOURCE_DIR})
+         COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/own_failures.sh $<TARGET_FILE:vl_grader> ${PROJECT_SOURCE_DIR}
+                 ${own_failure_stages})
 set_tests_properties("grader: its own failures exit non-zero and score no one, and any writable --out works"
                      PROPERTIES LABELS grader TIMEOUT 900)
 
@@ -58,6 +74,6 @@ file(GLOB attack_cases CONFIGURE_DEPENDS LIST_DIRECTORIES true ${CMAKE_CURRENT_L
 if(attack_cases AND NOT sanitized)
   set(name "grader: the adversarial suite: each attack is contained, scores no more than honest work, and changes nothing outside its grade")
   add_test(NAME "${name}" COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/adversarial_suite.sh $<TARGET_FILE:vl_grader>
-                                  ${CMAKE_CURRENT_BINARY_DIR}/adversarial)
+                                  ${CMAKE_CURRENT_BINARY_DIR}/adversarial -s ${calibration_limits_scale})
   set_tests_properties("${name}" PROPERTIES LABELS grader TIMEOUT 2400 RUN_SERIAL TRUE)
 endif()

@@ -1,17 +1,22 @@
 #!/usr/bin/env bash
 # The grader's own failures are its own (ctest label `grader`):
-#   grader/tests/own_failures.sh GRADER SOURCE_DIR
-# - grading into a fresh `mktemp -d` folder (mode 0700) scores the reference 100 for every stage;
+#   grader/tests/own_failures.sh GRADER SOURCE_DIR [STAGE...]
+# - grading into a fresh `mktemp -d` folder (mode 0700) scores the reference 100 for every
+#   stage (or the STAGEs named: the sanitizer build names one, as its calibration grades
+#   every stage's reference already);
 # - an --out the grader cannot write, or a machine without bubblewrap, makes it exit
 #   non-zero naming the cause, and writes no results.json that scores anyone;
 # - with --weaker-sandbox it grades anyway, and the results say the sandbox was weaker.
 set -uo pipefail
 grader=$1 src=$2
+shift 2
 fail=0
 say() { echo "$*"; }
 bad() { echo "FAILED: $*"; fail=1; }
 
-for stage in $("$grader" list | awk '{print $1}'); do
+stages=("$@")
+[ ${#stages[@]} -gt 0 ] || mapfile -t stages < <("$grader" list | awk '{print $1}')
+for stage in "${stages[@]}"; do
   out="$(mktemp -d)/x"
   if "$grader" grade "$stage" "$src/reference/$stage" --out "$out" >"$out.log" 2>&1 &&
      grep -q '"score": 100.0' "$out/results.json"; then
