@@ -37,6 +37,9 @@ foreach(case_dir IN LISTS calibration_cases)
   set_tests_properties("grader: ${stage} ${case_name}" PROPERTIES LABELS grader TIMEOUT 600)
 endforeach()
 
+# COST (about the seconds a test takes) makes ctest start the long end-to-end tests first,
+# so that none of them is left running alone at the end.
+#
 # The grader's own failures are its own: an --out it cannot use, no bubblewrap; and a
 # fresh 0700 mktemp folder works for every stage (under the sanitizers, for one: the
 # sample above grades every stage's reference).
@@ -49,7 +52,7 @@ add_test(NAME "grader: its own failures exit non-zero and score no one, and any 
          COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/own_failures.sh $<TARGET_FILE:vl_grader> ${PROJECT_SOURCE_DIR}
                  ${own_failure_stages})
 set_tests_properties("grader: its own failures exit non-zero and score no one, and any writable --out works"
-                     PROPERTIES LABELS grader TIMEOUT 900)
+                     PROPERTIES LABELS grader TIMEOUT 900 COST 100)
 
 # The student kit as a student meets it (kit_test.sh): export-kit refuses to write a kit in
 # which any reference line or hidden test name appears (find_leaks); in the kit, the
@@ -61,7 +64,7 @@ if(NOT sanitized)
   set(name "grader: the student kit leaks nothing, its README's commands work, only stage tests fail on the stubs, and finished pieces pass")
   add_test(NAME "${name}" COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/kit_test.sh $<TARGET_FILE:vl_grader>
                                   ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/kit-test)
-  set_tests_properties("${name}" PROPERTIES LABELS grader TIMEOUT 1500)
+  set_tests_properties("${name}" PROPERTIES LABELS grader TIMEOUT 1500 COST 220)
 endif()
 
 # The adversarial suite (grader/tests/adversarial/README.md): every attack is graded as it
