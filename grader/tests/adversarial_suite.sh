@@ -92,4 +92,6 @@ passed=$(grep -c '^ok ' "$out/results.txt")
 failed=$(grep -c '^FAILED' "$out/results.txt")
 echo "adversarial: ${#cases[@]} attacks, ${#runs[@]} grades"
 echo "$passed passed, $failed failed"
+# The failures again, last, where a log cut short still shows them.
+[ "$failed" -eq 0 ] || grep -A8 '^FAILED' "$out/results.txt" | grep -v '^ok \|^--$' | sed 's/^/failed: /'
 [ "$failed" -eq 0 ] && [ $status -eq 0 ]
