@@ -1,11 +1,8 @@
 #include "build_submission.hh"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <chrono>
 #include <csignal>
-#include <cstdio>
 #include <map>
 #include <mutex>
 #include <set>
@@ -93,21 +90,11 @@ void collect_protected(const installation& in, const std::vector<prebuilt_part>&
         }
 }
 
-/// `p`'s path, size, modification time and inode: what a rebuild or an upgrade changes.
-std::string file_identity(const fs::path& p) {
-    struct stat st {};
-    if (stat(p.c_str(), &st) != 0) return p.string() + " missing;";
-    char text[160];
-    std::snprintf(text, sizeof text, " %lld %lld.%09ld %llu;", static_cast<long long>(st.st_size),
-                  static_cast<long long>(st.st_mtim.tv_sec), st.st_mtim.tv_nsec, static_cast<unsigned long long>(st.st_ino));
-    return p.string() + text;
-}
-
 /// collect_protected, measured once per build: the sets are kept in
 /// build/.../grader/policy-cache/STAGE.json with the identity of every part, of the program
 /// ldd looked at and of every shared library, and measured again when any of them changes.
 void protected_symbols_of(const installation& in, const stage_info& stage, const std::vector<prebuilt_part>& parts,
-                       const sandbox_capabilities& caps, std::set<std::string>& all, std::set<std::string>& strong) {
+                          const sandbox_capabilities& caps, std::set<std::string>& all, std::set<std::string>& strong) {
     const fs::path cache = in.grader_build_dir / "policy-cache" / (stage.name + ".json");
     auto identity = [&](const std::vector<std::string>& libraries) {
         std::string id = file_identity(stage.trusted_tests.empty() ? in.reference_renderer : stage.trusted_tests);

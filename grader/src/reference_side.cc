@@ -1,9 +1,6 @@
 #include "reference_side.hh"
 
-#include <sys/stat.h>
-
 #include <algorithm>
-#include <cstdio>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -21,18 +18,8 @@ namespace {
 /// and inode (a rebuild or an edit changes them), and the limits the tests ran under.
 std::string identity(const stage_info& stage, const rubric& r) {
     std::string id;
-    for (const fs::path& p : {stage.trusted_tests, stage.tests_on_stubs, r.file}) {
-        struct stat st {};
-        if (p.empty() || stat(p.c_str(), &st) != 0) {
-            id += p.string() + " missing;";
-            continue;
-        }
-        char text[160];
-        std::snprintf(text, sizeof text, " %lld %lld.%09ld %llu;", static_cast<long long>(st.st_size),
-                      static_cast<long long>(st.st_mtim.tv_sec), st.st_mtim.tv_nsec,
-                      static_cast<unsigned long long>(st.st_ino));
-        id += p.string() + text;
-    }
+    for (const fs::path& p : {stage.trusted_tests, stage.tests_on_stubs, r.file})
+        id += p.empty() ? " missing;" : file_identity(p);
     id += " test limits " + std::to_string(r.test_limits.wall_seconds) + " " + std::to_string(r.test_limits.memory_bytes);
     return id;
 }

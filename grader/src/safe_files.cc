@@ -5,11 +5,22 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 #include "install.hh"
 
 namespace vl::grader {
+
+std::string file_identity(const std::filesystem::path& file) {
+    struct stat st {};
+    if (stat(file.c_str(), &st) != 0) return file.string() + " missing;";
+    char text[160];
+    std::snprintf(text, sizeof text, " %lld %lld.%09ld %llu;", static_cast<long long>(st.st_size),
+                  static_cast<long long>(st.st_mtim.tv_sec), st.st_mtim.tv_nsec,
+                  static_cast<unsigned long long>(st.st_ino));
+    return file.string() + text;
+}
 
 void write_new_file(const std::filesystem::path& file, std::string_view data) {
     const int fd = open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);

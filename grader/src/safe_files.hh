@@ -19,6 +19,11 @@ void write_new_file(const std::filesystem::path& file, std::string_view data);
 /// process), flushed to disk, then a rename.
 void replace_file(const std::filesystem::path& file, std::string_view data);
 
+/// `file`'s path, size, modification time and inode ("PATH missing;" when it cannot be
+/// stat()ed): what a rebuild, an edit or an upgrade changes. The caches of what is measured
+/// once per build compare these.
+std::string file_identity(const std::filesystem::path& file);
+
 /// The contents of `file` when it is a regular file (not a link) of at most `cap` bytes;
 /// otherwise empty.
 std::string read_regular_file(const std::filesystem::path& file, std::size_t cap);
