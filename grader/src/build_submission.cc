@@ -34,11 +34,16 @@ struct prebuilt_part {
     std::string inside;
 };
 
-/// The shared libraries the stage's programs load: those of the trusted test program (or
-/// of the reference renderer), as ldd lists them.
+/// The program whose shared libraries the stage's programs load: the trusted test program
+/// (or the reference renderer, for a stage without hidden tests).
+const fs::path& library_user(const installation& in, const stage_info& stage) {
+    return stage.trusted_tests.empty() ? in.reference_renderer : stage.trusted_tests;
+}
+
+/// The shared libraries the stage's programs load, as ldd lists them for library_user.
 std::vector<std::string> shared_libraries(const installation& in, const stage_info& stage, const sandbox_capabilities& caps) {
     run_request ldd;
-    ldd.argv = {"/usr/bin/ldd", (stage.trusted_tests.empty() ? in.reference_renderer : stage.trusted_tests).string()};
+    ldd.argv = {"/usr/bin/ldd", library_user(in, stage).string()};
     ldd.cwd = in.grader_build_dir.string();
     ldd.environment = child_environment(in.grader_build_dir.string());
     ldd.sandboxed = false;
@@ -97,7 +102,7 @@ void protected_symbols_of(const installation& in, const stage_info& stage, const
                           const sandbox_capabilities& caps, std::set<std::string>& all, std::set<std::string>& strong) {
     const fs::path cache = in.grader_build_dir / "policy-cache" / (stage.name + ".json");
     auto identity = [&](const std::vector<std::string>& libraries) {
-        std::string id = file_identity(stage.trusted_tests.empty() ? in.reference_renderer : stage.trusted_tests);
+        std::string id = file_identity(library_user(in, stage));
         for (const prebuilt_part& p : parts) id += file_identity(p.host);
         for (const std::string& l : libraries) id += file_identity(l);
         return id;
@@ -113,15 +118,8 @@ void protected_symbols_of(const installation& in, const stage_info& stage, const
     }
     const std::vector<std::string> libraries = shared_libraries(in, stage, caps);
     collect_protected(in, parts, libraries, caps, all, strong);
-    // Keeping it only saves time: a build folder this user cannot write costs nothing else.
-    std::error_code ec;
-    fs::create_directories(cache.parent_path(), ec);
-    try {
-        if (!ec)
-            replace_file(cache, nlohmann::json{{"identity", identity(libraries)}, {"libraries", libraries}, {"all", all},
-                                               {"strong", strong}}.dump() + "\n");
-    } catch (const grader_error&) {
-    }
+    keep_cache_file(cache, nlohmann::json{{"identity", identity(libraries)}, {"libraries", libraries}, {"all", all},
+                                          {"strong", strong}}.dump() + "\n");
 }
 
 }  // namespace

@@ -93,13 +93,7 @@ reference_side reference_side_of(const installation& in, const stage_info& stage
     if (!stage.tests_on_stubs.empty()) s.kit_passes = tests_passing_on_stubs(stage.tests_on_stubs, work / "stubs", caps);
     for (const rubric_sweep& w : r.sweeps) s.points[w.test] = measure(stage, named_test(s.tests, w.test), r, caps);
     for (const rubric_chart& c : r.charts) s.points[c.test] = measure(stage, named_test(s.tests, c.test), r, caps);
-    // Keeping it only saves time: a build folder this user cannot write costs nothing else.
-    std::error_code ec;
-    fs::create_directories(cache.parent_path(), ec);
-    try {
-        if (!ec) replace_file(cache, to_json(s, id).dump() + "\n");
-    } catch (const grader_error&) {
-    }
+    keep_cache_file(cache, to_json(s, id).dump() + "\n");
     return s;
 }
 

@@ -24,6 +24,11 @@ void replace_file(const std::filesystem::path& file, std::string_view data);
 /// once per build compare these.
 std::string file_identity(const std::filesystem::path& file);
 
+/// Keeps `data` as `file` (replace_file), making its folder first, when it can: for a cache
+/// of what is measured once per build, which only saves time, so a build folder this user
+/// cannot write costs nothing else.
+void keep_cache_file(const std::filesystem::path& file, std::string_view data);
+
 /// The contents of `file` when it is a regular file (not a link) of at most `cap` bytes;
 /// otherwise empty.
 std::string read_regular_file(const std::filesystem::path& file, std::size_t cap);
