@@ -204,7 +204,8 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 /// area(A)·count(A) + area(B)·count(B); sort or bin the children by box centre along
 /// an axis and take the cheapest split. (The reference puts the centres in 32 bins per
 /// axis and weighs entering a node as its two box tests, then collapses the binary tree
-/// into one of four subtrees per node, whose four boxes it tests at once. A sweep over
+/// into one of four subtrees per node, whose four boxes it tests at once; a leaf whose
+/// children fit in the lanes left free gives each child a lane of its own. A sweep over
 /// every split of the sorted children, or a split at the median of the longest axis, also
 /// meets the budgets; the budgets, not the method or the tree's width, are graded.) A node of more than `leaf_size` children is always
 /// split, one of at most `leaf_size` becomes a leaf unless a split is cheaper. Many children with
@@ -220,7 +221,7 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 ///
 /// **Budgets** (graded, see the tests): for N small spheres at random in the unit cube
 /// and rays through them, at most 3·log2(N) primitive tests and 12·log2(N) box tests per
-/// ray (the reference makes 3 to 8 and 5 to 7·log2(N)), and at most 1.5 times the reference
+/// ray (the reference makes 2 to 6 and 4 to 7·log2(N)), and at most 1.5 times the reference
 /// BVH's total on every scene of the tests (random, clustered, long thin objects). A ray
 /// that hits one of them costs at least log2(N / 4) counted tests: no honest tree finds
 /// one of N children with fewer decisions, so uncounted bound tests show.

@@ -197,7 +197,7 @@ private:
         binary.reserve(items.size());
         const subtree binary_root = build_subtree(binary, items, 0, items.size(), 0, root_);
         nodes_.reserve(binary.size() / 2 + 1);  // a node takes the place of 1 to 3 binary ones
-        root_subtree_ = binary_root.count > 0 ? binary_root : subtree{collapse(binary, binary_root.index), 0};
+        root_subtree_ = binary_root.count > 0 ? binary_root : subtree{collapse(binary, items, binary_root.index), 0};
         nodes_.shrink_to_fit();
         order_.reserve(items.size());
         for (const item& it : items) order_.push_back(it.object);
@@ -206,8 +206,11 @@ private:
     /// The node that stands for binary[index] and the binary nodes below it, up to four
     /// subtrees: starting from its two, the largest subtree that is an inner node is
     /// replaced by its two until there are four or only leaves (Wald, Benthin and Boulos
-    /// 2008). Nodes are stored parent first, so a node is usually near its first subtree.
-    std::uint32_t collapse(const std::vector<binary_node>& binary, std::uint32_t index) const {
+    /// 2008). Lanes still free then take the children of a leaf, one each, so that their
+    /// boxes are tested with the node's and only the children whose box the ray enters are
+    /// called. Nodes are stored parent first, so a node is usually near its first subtree.
+    std::uint32_t collapse(const std::vector<binary_node>& binary, const std::vector<item>& items,
+                           std::uint32_t index) const {
         struct lane {
             subtree where;
             box3 bounds;
@@ -226,6 +229,13 @@ private:
             lanes[widest] = {opened.child[0], opened.bounds[0]};
             lanes[used++] = {opened.child[1], opened.bounds[1]};
         }
+        for (int c = 0; c < used; ++c) {  // a leaf whose children fit in the lanes left
+            const subtree leaf = lanes[c].where;
+            if (leaf.count < 2 || used + static_cast<int>(leaf.count) - 1 > 4) continue;
+            for (std::uint32_t k = 0; k < leaf.count; ++k) {
+                lanes[k == 0 ? c : used++] = {subtree{leaf.index + k, 1}, items[leaf.index + k].bounds};
+            }
+        }
         const auto at = static_cast<std::uint32_t>(nodes_.size());
         nodes_.emplace_back();
         for (int c = 0; c < 4; ++c) {
@@ -235,7 +245,7 @@ private:
             }
         }
         for (int c = 0; c < used; ++c) {
-            const subtree child = lanes[c].where.count > 0 ? lanes[c].where : subtree{collapse(binary, lanes[c].where.index), 0};
+            const subtree child = lanes[c].where.count > 0 ? lanes[c].where : subtree{collapse(binary, items, lanes[c].where.index), 0};
             nodes_[at].child[c] = child;  // after the call, which may move nodes_
         }
         return at;

@@ -215,11 +215,12 @@ TEST_CASE("bvh: a ray through the root box that hits nothing gets composite_only
 // among the random spheres (5.2 to 7.6 log2(N) box tests: more than the contract's
 // "about 6 log2(N)" at N = 10000 and 100000, hence 12 here). Today's reference (32 bins
 // per axis, a node's entry weighed as its two box tests, the binary tree collapsed into
-// four subtrees per node, VL_MEASURE below) makes 3.2 to 8.2 primitive and 40 to 114 box
-// tests per ray among the random spheres, 0.86 to 0.98 times the totals written below. For comparison, a median split of the longest axis with
-// leaves of 4 makes 1.0 to 1.3 times the reference's tests (up to 24 primitive tests per
-// ray), a 12-bin SAH about 1.0 times, a tree built by insertion (Goldsmith and Salmon)
-// 1.1 to 1.45 times; a LIST makes N primitive tests per ray, a tree walked without
+// four subtrees per node, a leaf's children given the lanes left free, VL_MEASURE below)
+// makes 1.8 to 5.8 primitive and 43 to 119 box tests per ray among the random spheres,
+// 0.96 to 0.99 times the totals written below. For comparison, a median split of the
+// longest axis with leaves of 4 makes 1.0 to 1.3 times the reference's tests (up to 24
+// primitive tests per ray), a 12-bin SAH about 1.0 times, a tree built by insertion
+// (Goldsmith and Salmon) 1.1 to 1.45 times; a LIST makes N primitive tests per ray, a tree walked without
 // skipping boxes beyond the best hit about N along the row of spheres.
 
 namespace {
