@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "build_submission.hh"
@@ -72,7 +73,10 @@ std::string explain_link_errors(const std::string& log, const std::vector<std::s
     std::vector<std::string> other;
     std::istringstream in(log);
     for (std::string line; std::getline(in, line);) {
-        for (const char* marker : {"undefined reference to ", "multiple definition of "}) {
+        enum class link_error { undefined, defined_twice };
+        const std::pair<const char*, link_error> markers[] = {{"undefined reference to ", link_error::undefined},
+                                                              {"multiple definition of ", link_error::defined_twice}};
+        for (const auto& [marker, kind] : markers) {
             const auto at = line.find(marker);
             if (at == std::string::npos) continue;
             std::string symbol = line.substr(at + std::string(marker).size());
@@ -82,7 +86,7 @@ std::string explain_link_errors(const std::string& log, const std::vector<std::s
                 rest = symbol.substr(end + 1);
                 symbol.erase(end);
             }
-            if (marker[0] == 'u') {
+            if (kind == link_error::undefined) {
                 missing.insert(symbol);
                 continue;
             }

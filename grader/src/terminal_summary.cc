@@ -19,9 +19,9 @@ std::string fixed(double x, int decimals = 1) {
     return buf;
 }
 
-std::string first_line(const std::string& s) {
+std::string first_line(const std::string& s, std::size_t width = 110) {
     const std::string line = s.substr(0, s.find('\n'));
-    return line.size() > 110 ? line.substr(0, 107) + "..." : line;
+    return line.size() > width ? line.substr(0, width - 3) + "..." : line;
 }
 
 }  // namespace
@@ -44,13 +44,20 @@ void print_summary(std::ostream& s, const graded_submission& g, const std::files
         const bool refused = g.items.front().result == item_result::refused;
         s << "  " << red << (refused ? "refused:" : "did not build:") << reset << " " << first_line(g.items.front().message)
           << "\n";
-        if (refused) {
-            // The reasons, one per line, as the report gives them.
-            std::istringstream lines(g.items.front().message);
-            std::string line;
-            std::getline(lines, line);
-            for (int k = 0; k < 5 && std::getline(lines, line) && line.starts_with("  "); ++k) s << "  " << line << "\n";
+        // What follows the first line: for a refusal, its reasons (one per line, indented,
+        // as the report gives them); for a build, the compiler's or the linker's next lines,
+        // so that the first error itself is on screen, not only the context before it.
+        std::istringstream lines(g.items.front().message);
+        std::string line;
+        std::getline(lines, line);
+        int shown = 0;
+        while (shown < 6 && std::getline(lines, line)) {
+            if (refused && !line.starts_with("  ")) break;
+            if (line.find_first_not_of(' ') == std::string::npos) continue;
+            s << "  " << dim << (refused ? line : "  " + first_line(line, 160)) << reset << "\n";
+            ++shown;
         }
+        if (!refused && shown == 6) s << "    " << dim << "... the rest in the report" << reset << "\n";
     }
     for (const category_total& c : g.categories)
         s << "  " << tint(c.score, c.max_score) << fixed(c.score) << " / " << fixed(c.max_score) << reset << "  "

@@ -21,7 +21,6 @@
 #include <vector>
 
 #include "stage_03.hh"
-#include "vl/bounds.hh"
 #include "vl/composite_bases.hh"
 #include "vl/stats.hh"
 
@@ -189,10 +188,7 @@ private:
             items.push_back(it);
         }
         for (const item& it : items) root_.grow(it.bounds);
-        for (int k = 0; k < 3; ++k) {
-            root_box_[0][k] = float4{round_down(root_.lo[k]), INFINITY, INFINITY, INFINITY};
-            root_box_[1][k] = float4{round_up(root_.hi[k]), -INFINITY, -INFINITY, -INFINITY};
-        }
+        for (int c = 0; c < 4; ++c) set_lane(root_box_, c, c == 0 ? &root_ : nullptr);
         std::vector<binary_node> binary;
         binary.reserve(items.size());
         const subtree binary_root = build_subtree(binary, items, 0, items.size(), 0, root_);
@@ -201,6 +197,15 @@ private:
         nodes_.shrink_to_fit();
         order_.reserve(items.size());
         for (const item& it : items) order_.push_back(it.object);
+    }
+
+    /// Lane c of a node's boxes: `box` rounded outwards, or the empty box (low corner
+    /// +infinity, high -infinity), which every ray misses, where `box` is null.
+    static void set_lane(float4 (&bounds)[2][3], int c, const box3* box) {
+        for (int k = 0; k < 3; ++k) {
+            bounds[0][k][c] = box ? round_down(box->lo[k]) : INFINITY;
+            bounds[1][k][c] = box ? round_up(box->hi[k]) : -INFINITY;
+        }
     }
 
     /// The node that stands for binary[index] and the binary nodes below it, up to four
@@ -238,12 +243,7 @@ private:
         }
         const auto at = static_cast<std::uint32_t>(nodes_.size());
         nodes_.emplace_back();
-        for (int c = 0; c < 4; ++c) {
-            for (int k = 0; k < 3; ++k) {
-                nodes_[at].bounds[0][k][c] = c < used ? round_down(lanes[c].bounds.lo[k]) : INFINITY;
-                nodes_[at].bounds[1][k][c] = c < used ? round_up(lanes[c].bounds.hi[k]) : -INFINITY;
-            }
-        }
+        for (int c = 0; c < 4; ++c) set_lane(nodes_[at].bounds, c, c < used ? &lanes[c].bounds : nullptr);
         for (int c = 0; c < used; ++c) {
             const subtree child = lanes[c].where.count > 0 ? lanes[c].where : subtree{collapse(binary, items, lanes[c].where.index), 0};
             nodes_[at].child[c] = child;  // after the call, which may move nodes_
