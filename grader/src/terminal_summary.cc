@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ostream>
+#include <string>
+#include <vector>
 
 namespace vl::grader {
 
@@ -47,17 +49,19 @@ void print_summary(std::ostream& s, const graded_submission& g, const std::files
         // What follows the first line: for a refusal, its reasons (one per line, indented,
         // as the report gives them); for a build, the compiler's or the linker's next lines,
         // so that the first error itself is on screen, not only the context before it.
+        constexpr std::size_t most_lines = 6;
+        std::vector<std::string> rest;
         std::istringstream lines(g.items.front().message);
         std::string line;
         std::getline(lines, line);
-        int shown = 0;
-        while (shown < 6 && std::getline(lines, line)) {
+        while (std::getline(lines, line)) {
             if (refused && !line.starts_with("  ")) break;
-            if (line.find_first_not_of(' ') == std::string::npos) continue;
-            s << "  " << dim << (refused ? line : "  " + first_line(line, 160)) << reset << "\n";
-            ++shown;
+            if (line.find_first_not_of(' ') != std::string::npos)
+                rest.push_back(refused ? line : "  " + first_line(line, 160));
         }
-        if (!refused && shown == 6) s << "    " << dim << "... the rest in the report" << reset << "\n";
+        for (std::size_t k = 0; k < rest.size() && k < most_lines; ++k) s << "  " << dim << rest[k] << reset << "\n";
+        if (rest.size() > most_lines)
+            s << "    " << dim << "... and " << rest.size() - most_lines << " more lines in the report" << reset << "\n";
     }
     for (const category_total& c : g.categories)
         s << "  " << tint(c.score, c.max_score) << fixed(c.score) << " / " << fixed(c.max_score) << reset << "  "

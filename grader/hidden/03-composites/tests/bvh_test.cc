@@ -220,8 +220,8 @@ TEST_CASE("bvh: a ray through the root box that hits nothing gets composite_only
 // 0.96 to 0.99 times the totals written below. For comparison, a median split of the
 // longest axis with leaves of 4 makes 1.0 to 1.3 times the reference's tests (up to 24
 // primitive tests per ray), a 12-bin SAH about 1.0 times, a tree built by insertion
-// (Goldsmith and Salmon) 1.1 to 1.45 times; a LIST makes N primitive tests per ray, a tree walked without
-// skipping boxes beyond the best hit about N along the row of spheres.
+// (Goldsmith and Salmon) 1.1 to 1.45 times; a LIST makes N primitive tests per ray, a
+// tree walked without skipping boxes beyond the best hit about N along the row of spheres.
 
 namespace {
 struct measured {
