@@ -1,7 +1,7 @@
 // embree_bench — the reference's BVH side by side with Embree 3, one thread each.
 //
-// For each scene (spheres-100k, spheres-1m: spheres of radius 0.005 at random in the unit
-// cube; mesh: a displaced sphere of 307 200 triangles) it measures
+// For each scene (spheres-100k, spheres-1m or any spheres-N: N spheres of radius 0.005 at
+// random in the unit cube; mesh: a displaced sphere of 307 200 triangles) it measures
 //   - the build: the reference BVH builds on its first ray, so one intersect() is timed
 //     alone; Embree's is rtcCommitScene;
 //   - closest-hit tracing, in millions of rays per second: primary rays (a pinhole camera
@@ -16,7 +16,7 @@
 //   - how many closest hits agree (the same primitive, t within 1e-5 relative, or both
 //     miss), and how many are of the same primitive (or both miss) whatever their t.
 //
-//   embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh] [--kinds primary,incoherent]
+//   embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh,...] [--kinds primary,incoherent]
 //                [--repeat R]
 //
 // N rays of each kind (primary: the nearest square, default 1000 x 1000); only the kinds
@@ -157,6 +157,35 @@ bool agree(const hit_record& a, const hit_record& b) {
     return a.id == b.id && std::abs(a.t - b.t) <= 1e-5 * std::max(a.t, b.t);
 }
 
+/// How many spheres the scene `spheres-N` has: N a whole number, with an optional suffix k
+/// (thousands) or m (millions), from 1 to 10m (spheres-100k, spheres-2500).
+std::size_t sphere_count(const std::string& name) {
+    const std::string prefix = "spheres-";
+    const auto refuse = [&] {
+        return std::runtime_error("no scene '" + name +
+                                  "' (mesh, or spheres-N: N from 1 to 10m, with k for thousands or m for millions, "
+                                  "such as spheres-100k)");
+    };
+    if (name.rfind(prefix, 0) != 0) throw refuse();
+    std::string digits = name.substr(prefix.size());
+    std::size_t scale = 1;
+    if (!digits.empty() && (digits.back() == 'k' || digits.back() == 'm')) {
+        scale = digits.back() == 'k' ? 1000 : 1000000;
+        digits.pop_back();
+    }
+    if (digits.empty() || digits.size() > 8 || digits.find_first_not_of("0123456789") != std::string::npos) throw refuse();
+    const std::size_t n = std::stoul(digits) * scale;
+    if (n < 1 || n > 10000000) throw refuse();
+    return n;
+}
+
+/// The seed of a spheres-N scene: 1 and 2 for the two the issue names (the figures in
+/// docs/performance.md), otherwise the count itself, so each size is one fixed scene.
+std::uint64_t sphere_seed(const std::string& name) {
+    const std::size_t n = sphere_count(name);
+    return n == 100000 ? 1 : n == 1000000 ? 2 : n;
+}
+
 struct options {
     std::size_t rays = 1000000;
     std::vector<std::string> scenes{"spheres-100k", "spheres-1m", "mesh"};
@@ -183,11 +212,14 @@ options parse(int argc, char** argv) {
             for (std::string name; std::getline(list, name, ',');) names.push_back(name);
         } else {
             throw std::runtime_error(
-                "usage: embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh] [--kinds primary,incoherent] "
+                "usage: embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,spheres-N,mesh] [--kinds primary,incoherent] "
                 "[--repeat R]");
         }
     }
     if (o.rays == 0) throw std::runtime_error("--rays must be at least 1");
+    for (const std::string& scene : o.scenes) {
+        if (scene != "mesh") (void)sphere_count(scene);  // refuses a bad name before any scene is built
+    }
     for (const std::string& kind : o.kinds) {
         if (kind != "primary" && kind != "incoherent")
             throw std::runtime_error("no kind of rays '" + kind + "' (primary, incoherent)");
@@ -199,10 +231,8 @@ constexpr float zero_t = float(vl::rtab_component::default_zero_t);  // the refe
 
 void run_scene(const std::string& name, const options& o) {
     scene_data s;
-    if (name == "spheres-100k") s = random_spheres(100000, 1);
-    else if (name == "spheres-1m") s = random_spheres(1000000, 2);
-    else if (name == "mesh") s = displaced_sphere(160, 3);
-    else throw std::runtime_error("no scene '" + name + "' (spheres-100k, spheres-1m, mesh)");
+    if (name == "mesh") s = displaced_sphere(160, 3);
+    else s = random_spheres(sphere_count(name), sphere_seed(name));
 
     const int side = std::max(1, int(std::lround(std::sqrt(double(o.rays)))));
     const std::map<std::string, std::vector<ray_f>> ray_sets{
