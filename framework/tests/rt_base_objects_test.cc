@@ -185,6 +185,34 @@ TEST_CASE("counters: each thread counts its own tests", "[rt][counters]") {
     CHECK(counts().primitive_tests == 0);
 }
 
+TEST_CASE("counters: count_bounding_volume_tests only adds, and refuses a count that would wrap", "[rt][counters]") {
+    clear_counts();
+    count_bounding_volume_tests(5);
+    count_bounding_volume_tests(0);
+    CHECK(counts().bounding_volume_tests == 5);
+    // Taking tests away through unsigned wrap-around (adding 2^64 - 3) is refused, and
+    // nothing is counted.
+    CHECK_THROWS_WITH(count_bounding_volume_tests(std::uint64_t{0} - 3),
+                      Catch::Contains("count_bounding_volume_tests(18446744073709551613)") &&
+                          Catch::Contains("more tests than any ray makes"));
+    CHECK(counts().bounding_volume_tests == 5);
+    // Steps of at most 2^40 that would pass 2^64 are refused at the step that would wrap.
+    const std::uint64_t step = std::uint64_t{1} << 40;
+    count_bounding_volume_tests(step);  // the largest count one call may make
+    CHECK(counts().bounding_volume_tests == 5 + step);
+    std::uint64_t calls = 0;
+    try {
+        for (; calls < (std::uint64_t{1} << 25); ++calls) count_bounding_volume_tests(step);
+        FAIL("2^25 steps of 2^40 passed 2^64 without a refusal");
+    } catch (const usage_error& e) {
+        CHECK_THAT(e.what(), Catch::Contains("past 2^64"));
+    }
+    // Before call k the count is 5 + (k + 1) 2^40; call 2^24 - 2 would make it 2^64 + 5.
+    CHECK(calls == (std::uint64_t{1} << 24) - 2);
+    CHECK(counts().bounding_volume_tests == 5 + ((std::uint64_t{1} << 24) - 1) * step);
+    clear_counts();
+}
+
 TEST_CASE("bounds: a box test counts one bounding-volume test and finds the span", "[rt][bounds]") {
     clear_counts();
     ray_span span;

@@ -6,7 +6,8 @@
 /// here. The counters are per thread (no locks, no shared cache lines on the hot path);
 /// whoever owns the threads (the render driver) reads each thread's counts and sums them.
 /// They replace the thesis's `_INTRSCT_PRFM` counters, which had to be compiled in and
-/// cleared by hand; these are always on and never overflow in practice (64 bits).
+/// cleared by hand; these are always on and never overflow in practice (64 bits), and a
+/// count never goes down (see count_bounding_volume_tests()).
 
 #include <cstdint>
 #include <iosfwd>
@@ -71,10 +72,24 @@ inline intersection_counts counts() {
     c.bounding_volume_tests = t.bounding_volume;
     return c;
 }
+namespace detail {
+/// The most tests one call of count_bounding_volume_tests() may count: more than any ray,
+/// or any render, makes (2^40).
+inline constexpr std::uint64_t most_tests_per_count = std::uint64_t{1} << 40;
+/// Throws vl::usage_error for count_bounding_volume_tests(n) (out of line, off the hot path).
+[[noreturn]] void refuse_count(std::uint64_t n, std::uint64_t counted);
+}  // namespace detail
+
 /// Counts `n` bounding-volume tests in this thread's counters, for a composite that tests
 /// its bounds with its own code instead of vl::hits_box or vl::hits_sphere (the reference
-/// BVH's float boxes): each test must still be counted once.
-inline void count_bounding_volume_tests(std::uint64_t n) { detail::thread_tallies.bounding_volume += n; }
+/// BVH's float boxes): each test must still be counted once. A count only grows: throws
+/// vl::usage_error, counting nothing, when `n` is above 2^40 (a negative number passed as
+/// unsigned, say) or when the thread's count would pass 2^64 and start again from 0.
+inline void count_bounding_volume_tests(std::uint64_t n) {
+    std::uint64_t& counted = detail::thread_tallies.bounding_volume;
+    if (n > detail::most_tests_per_count || counted + n < counted) detail::refuse_count(n, counted);
+    counted += n;
+}
 
 /// Sets this thread's counters to zero (the thesis's `clear_count()`).
 inline void clear_counts() { detail::thread_tallies = {}; }
