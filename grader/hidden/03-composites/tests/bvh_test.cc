@@ -7,6 +7,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -302,6 +304,18 @@ TEST_CASE("bvh: along a row of spheres only the first is tested: near-first, and
     const sweep_cost c = sweep(t, scene, *bvh, set, rays);
     t.report();
     check_budget(scene, 1000, c, 1, 4, reference_row);
+}
+
+// --- the work behind the counts -----------------------------------------------------------------
+
+// The budgets count tests; this checks that the counted tests are the work (see
+// bvh_time_growth() in bvh_scenes.hh; every budget above checks it too).
+TEST_CASE("bvh: the time a ray takes grows with log2(N) as its counted tests do, not with N", "[03][bvh][budget]") {
+    const time_growth& g = bvh_time_growth();
+    if (std::getenv("VL_MEASURE"))
+        std::printf("MEASURE time per ray: %.3g us at 1000, %.3g us at 64000, growth %.3g; tests %.4g, %.4g\n",
+                    1e6 * g.small.seconds, 1e6 * g.large.seconds, g.growth(), g.small.tests, g.large.tests);
+    VL_EXPECT(g.growth() <= most_time_growth, g.words());
 }
 
 // --- leaf_size, rebuilding, threads ------------------------------------------------------------

@@ -168,6 +168,10 @@ public:
 
 /// Every probe's tests on this thread, all probes together.
 inline thread_local std::uint64_t probe_tests = 0;
+/// Every probe's tests on every thread: more than this thread's, during a ray this thread
+/// asked for, means the composite tested children on threads of its own, which the
+/// counters (per thread) do not see.
+inline std::atomic<std::uint64_t> probe_tests_everywhere{0};
 
 /// \brief The probes' common part: a primitive with a surface that counts each of its
 /// intersection tests, and a long-double answer key of its own (exact_t).
@@ -186,6 +190,7 @@ public:
 private:
     intersection find_intersection(const ray& r) const override {
         ++probe_tests;
+        probe_tests_everywhere.fetch_add(1, std::memory_order_relaxed);
         tests_.fetch_add(1, std::memory_order_relaxed);
         const real t = exact_t(r);
         return t > 0 ? intersection::at(static_cast<double>(t), this) : intersection::none();
@@ -514,17 +519,19 @@ struct probe_set {
     }
 };
 
-/// What one ray cost: the framework's counters and the probes' own count.
+/// What one ray cost: the framework's counters and the probes' own count, on this thread
+/// and on all threads.
 struct cost {
     intersection_counts counts;
     std::uint64_t probe = 0;
+    std::uint64_t probe_everywhere = 0;
 };
 template <class F>
 cost measure(F&& f) {
     const intersection_counts before = counts();
-    const std::uint64_t probe_before = probe_tests;
+    const std::uint64_t probe_before = probe_tests, everywhere_before = probe_tests_everywhere.load();
     f();
-    return {counts() - before, probe_tests - probe_before};
+    return {counts() - before, probe_tests - probe_before, probe_tests_everywhere.load() - everywhere_before};
 }
 
 /// Checks `got` against the brute-force answer over `set`: the same nearest t (up to
