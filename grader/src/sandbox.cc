@@ -166,6 +166,15 @@ std::string run_result::output_head(std::size_t max_bytes) const {
     return s;
 }
 
+std::string run_result::output_tail(std::size_t max_bytes) const {
+    const std::size_t from = output.size() > max_bytes ? output.size() - max_bytes : 0;
+    std::string s = output.substr(from);
+    if (from > 0) s = "[... " + std::to_string(from) + " bytes of output before this not shown]\n" + s;
+    if (output_bytes > output.size())
+        s += "\n[... " + std::to_string(output_bytes - output.size()) + " more bytes of output not kept]";
+    return s;
+}
+
 run_result run(const run_request& rq, const sandbox_capabilities& caps) {
     run_result result;
     const bool bwrap = rq.sandboxed && caps.mode == isolation::bubblewrap;

@@ -102,6 +102,9 @@ struct run_result {
     std::string describe(double timeout) const;
     /// The output, with a note of how much more there was.
     std::string output_head(std::size_t max_bytes) const;
+    /// The last `max_bytes` of the output kept (where a program's last words, its error,
+    /// are), saying how much came before and how much was not kept.
+    std::string output_tail(std::size_t max_bytes) const;
 };
 
 /// Runs `request`, waiting for it to end or time out.

@@ -76,7 +76,7 @@ scene_outcome render_and_compare(const fs::path& render_program, const rubric_sc
         o.message = "the render " + (r.report_overflow ? std::string("wrote an image larger than ") +
                                                              std::to_string(limits.report_bytes >> 20) + " MiB"
                                                        : r.describe(rq.limits.wall_seconds)) +
-                    ":\n" + r.output_head(1500);
+                    "; the end of what your program printed:\n" + r.output_tail(500);
         return o;
     }
     // The renderer's bytes are decoded here and only the grader's own encoding of them is

@@ -437,6 +437,28 @@ inline std::string show_rays(const std::vector<ray>& rays) {
     if (rays.size() > 3) s += "; and " + std::to_string(rays.size() - 3) + " more";
     return s;
 }
+/// `from`, the rays of `log` that start within `tol` of the hit point `p`, in words. When
+/// there is none but a ray of `log` starts near `p` (within 0.01 times the coordinates'
+/// size), says how far the nearest one starts: a secondary ray offset by a fixed or too
+/// large distance is cast, just not from where the contract says.
+inline std::string show_rays(const std::vector<ray>& from, const std::vector<ray>& log, const rvec& p, real tol) {
+    if (!from.empty()) return show_rays(from);
+    const real scale = std::max(static_cast<real>(1), std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}));
+    const ray* nearest = nullptr;
+    real distance = 0;
+    for (const ray& r : log) {
+        const real d = len(to_r(r.origin()) - p);
+        if (d <= 0.01L * scale && (nearest == nullptr || d < distance)) {
+            nearest = &r;
+            distance = d;
+        }
+    }
+    if (nearest == nullptr) return "no ray";
+    return "no ray within " + num(static_cast<double>(tol)) + "; the nearest starts " +
+           num(static_cast<double>(distance)) + " from the hit point, " + show(*nearest) +
+           " (start a secondary ray at the hit point moved off the surface by delta = 1e-9 * max(1, |P.x|, |P.y|, "
+           "|P.z|), as stage_04.hh says, not by a fixed or larger distance)";
+}
 
 /// Checks that your tracer shows an emitter (traced along `r`, depth 0) as a colour with
 /// `channel` clearly lit (a tracer that returns black everywhere does not pass).

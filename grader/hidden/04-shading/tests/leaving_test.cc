@@ -103,7 +103,7 @@ TEST_CASE("leaving: the transmitted ray out of glass follows Snell's law with et
             t.check(found, [&] {
                 return "the transmitted ray should go towards " + show(want) + " ± 1e-9 from " + show(p) +
                        " (within 1e-6): Snell's law with eta1 = ior, eta2 = 1 and the normal facing the ray, (0, -1, 0); "
-                       "the rays your tracer cast from there: " + show_rays(from) + ". Asked: " + asked;
+                       "the rays your tracer cast from there: " + show_rays(from, b.watch->rays(), p, 1e-6L) + ". Asked: " + asked;
             });
         }
     t.report();

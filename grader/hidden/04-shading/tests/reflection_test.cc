@@ -43,7 +43,7 @@ void check_secondary(tally& t, const std::vector<ray>& log, const rvec& p, const
         return "the reflected ray should go towards " + show(want) + " ± 1e-9 from " + show(p) + " (within " +
                num(static_cast<double>(1e-6L * scale)) + ", on the side the normal " + show(n) + " points to); " +
                (found ? "yours starts on the other side of the surface"
-                      : "the rays your tracer cast from there: " + show_rays(from)) +
+                      : "the rays your tracer cast from there: " + show_rays(from, log, p, 1e-6L * scale)) +
                ". Asked: " + asked;
     });
 }

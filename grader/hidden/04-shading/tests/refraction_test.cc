@@ -44,7 +44,7 @@ void check_transmitted(tally& t, const std::vector<ray>& log, const rvec& p, con
                " (within " + num(static_cast<double>(1e-6L * scale)) + (inside_of ? ", just inside the object" : "") +
                "); " +
                (found ? "yours starts at " + show(found->origin()) + ", where contains() is false"
-                      : "the rays your tracer cast from there: " + show_rays(from)) +
+                      : "the rays your tracer cast from there: " + show_rays(from, log, p, 1e-6L * scale)) +
                ". Asked: " + asked;
     });
 }
@@ -284,7 +284,7 @@ TEST_CASE("robust: the transmitted ray starts just inside the object it enters",
             }
         t.check(inward > 0 && outside == nullptr, [&] {
             return std::string(inward == 0 ? "your tracer should cast a transmitted ray into the sphere from " + show(p) +
-                                                 "; it cast none (the rays from there: " + show_rays(from) + ")"
+                                                 "; it cast none (the rays from there: " + show_rays(from, watch->rays(), p, 1e-6L * scale) + ")"
                                            : "the transmitted ray should start just inside the sphere, where contains() "
                                              "is true; yours starts at " + show(outside->origin()) + ", outside it") +
                    ". Asked: " + asked;

@@ -234,7 +234,7 @@ TEST_CASE("sweep: total internal reflection decided right from 1e-12 to 0.1 radi
                                     ", not a unit vector. Asked: " + asked;
                         } else if (transmits && others < 1) {
                             fault = "below the critical angle the light must be transmitted, but your tracer cast no "
-                                    "transmitted ray besides the reflected one (it cast " + show_rays(from) +
+                                    "transmitted ray besides the reflected one (it cast " + show_rays(from, b.watch->rays(), b.hit(r), 1e-6L) +
                                     "). Asked: " + asked;
                         } else if (!transmits && others > 0) {
                             fault = "beyond the critical angle the light is totally internally reflected, but your "
