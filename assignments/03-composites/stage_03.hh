@@ -227,9 +227,10 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 /// BVH's total on every scene of the tests (random, clustered, long thin objects). A ray
 /// that hits one of them costs at least log2(N / 4) counted tests: no honest tree finds
 /// one of N children with fewer decisions, so uncounted bound tests show. And the counted
-/// tests must be the work: from 1000 to 64000 random spheres a ray's time may grow at
-/// most 20 times (a tree's grows 3 to 5 times, a list's about 64), or every budget fails,
-/// whatever the counts say.
+/// tests must be the work: from 1000 to 64000 random spheres a ray's processor time may
+/// grow at most 20 times (a tree's grows 3 to 6 times, a list's 64 or more), with no more
+/// work on other threads than on the calling one, or every budget fails, whatever the
+/// counts say.
 ///
 /// insert() refuses a child whose box is unknown (see above), a null pointer and the BVH
 /// itself. min_point()/max_point() are the root's box (the union of the children's);

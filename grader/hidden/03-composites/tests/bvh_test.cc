@@ -313,9 +313,11 @@ TEST_CASE("bvh: along a row of spheres only the first is tested: near-first, and
 TEST_CASE("bvh: the time a ray takes grows with log2(N) as its counted tests do, not with N", "[03][bvh][budget]") {
     const time_growth& g = bvh_time_growth();
     if (std::getenv("VL_MEASURE"))
-        std::printf("MEASURE time per ray: %.3g us at 1000, %.3g us at 64000, growth %.3g; tests %.4g, %.4g\n",
-                    1e6 * g.small.seconds, 1e6 * g.large.seconds, g.growth(), g.small.tests, g.large.tests);
-    VL_EXPECT(g.growth() <= most_time_growth, g.words());
+        std::printf("MEASURE time per ray: %.3g us at 1000, %.3g us at 64000, growth %.3g; tests %.4g, %.4g; "
+                    "other threads %.3g s, this one %.3g s\n",
+                    1e6 * g.small.seconds, 1e6 * g.large.seconds, g.growth(), g.small.tests, g.large.tests, g.elsewhere,
+                    g.small.here + g.large.here);
+    VL_EXPECT(g.ok(), g.words());
 }
 
 // --- leaf_size, rebuilding, threads ------------------------------------------------------------
