@@ -179,12 +179,9 @@ std::size_t sphere_count(const std::string& name) {
     return n;
 }
 
-/// The seed of a spheres-N scene: 1 and 2 for the two the issue names (the figures in
-/// docs/performance.md), otherwise the count itself, so each size is one fixed scene.
-std::uint64_t sphere_seed(const std::string& name) {
-    const std::size_t n = sphere_count(name);
-    return n == 100000 ? 1 : n == 1000000 ? 2 : n;
-}
+/// The seed of the scene of `n` spheres: 1 and 2 for 100 000 and 1 000 000 (the figures
+/// docs/performance.md quotes), otherwise the count itself, so each size is one scene.
+std::uint64_t sphere_seed(std::size_t n) { return n == 100000 ? 1 : n == 1000000 ? 2 : n; }
 
 struct options {
     std::size_t rays = 1000000;
@@ -232,7 +229,10 @@ constexpr float zero_t = float(vl::rtab_component::default_zero_t);  // the refe
 void run_scene(const std::string& name, const options& o) {
     scene_data s;
     if (name == "mesh") s = displaced_sphere(160, 3);
-    else s = random_spheres(sphere_count(name), sphere_seed(name));
+    else {
+        const std::size_t n = sphere_count(name);
+        s = random_spheres(n, sphere_seed(n));
+    }
 
     const int side = std::max(1, int(std::lround(std::sqrt(double(o.rays)))));
     const std::map<std::string, std::vector<ray_f>> ray_sets{
