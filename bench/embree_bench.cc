@@ -14,7 +14,10 @@
 //   - the reference's heap per primitive (mallinfo2: from before the primitives are made to
 //     after the BVH is built) and what Embree's memory monitor counts;
 //   - how many closest hits agree (the same primitive, t within 1e-5 relative, or both
-//     miss), and how many are of the same primitive (or both miss) whatever their t.
+//     miss), and how many are of the same primitive (or both miss) whatever their t;
+//   - the rays that differ, decided again in long double as the oracle test decides them
+//     (exact_hits.hh): the reference right, a tie, grazing (either right), the reference
+//     wrong.
 //
 //   embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh,...] [--kinds primary,incoherent]
 //                [--repeat R]
@@ -38,6 +41,7 @@
 #include <vector>
 
 #include "embree_scene.hh"
+#include "exact_hits.hh"
 
 namespace {
 
@@ -277,12 +281,15 @@ void run_scene(const std::string& name, const options& o) {
         }
 
         std::size_t agreeing = 0, same_primitive = 0, ref_hit_count = 0, emb_hit_count = 0;
+        std::size_t decided[5] = {};  // the rays that differ, by what long double says (exact_hits.hh)
         for (std::size_t i = 0; i < rays.size(); ++i) {
             const hit_record a = ref.record(ref_hits[i]), b = emb.record(emb_hits[i]);
-            agreeing += agree(a, b);
+            const bool same = agree(a, b);
+            agreeing += same;
             same_primitive += a.id == b.id;
             ref_hit_count += a.id.hit();
             emb_hit_count += b.id.hit();
+            if (!same) ++decided[int(decide(exact(rays[i]), s, a, b))];
         }
         const double ref_mrays = rays.size() / ref_s / 1e6, emb_mrays = rays.size() / emb_s / 1e6;
         std::printf("scene=%s rays=%s reference_mrays=%.3g embree_mrays=%.3g ratio=%.3g\n", name.c_str(), kind.c_str(),
@@ -293,6 +300,9 @@ void run_scene(const std::string& name, const options& o) {
                     double(cost.primitive_tests + cost.composite_tests) / passes - 1);
         std::printf("scene=%s rays=%s count=%zu agree=%zu same_primitive=%zu reference_hits=%zu embree_hits=%zu\n",
                     name.c_str(), kind.c_str(), rays.size(), agreeing, same_primitive, ref_hit_count, emb_hit_count);
+        std::printf("scene=%s rays=%s differ=%zu reference_right=%zu tie=%zu grazing=%zu reference_wrong=%zu\n",
+                    name.c_str(), kind.c_str(), rays.size() - agreeing, decided[int(verdict::reference_right)],
+                    decided[int(verdict::tie)], decided[int(verdict::grazing)], decided[int(verdict::reference_wrong)]);
         std::fflush(stdout);
     }
     std::printf("scene=%s build reference_s=%.3g embree_s=%.3g ratio=%.3g\n", name.c_str(), ref_build, emb_build,
