@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <functional>
 #include <limits>
@@ -98,13 +99,56 @@ inline real fresnel_exact(real eta1, real eta2, real cos_i) { return testing::fr
 struct band {
     real lo = 0, hi = 0;
     bool holds(real x) const { return x >= lo && x <= hi; }
+    /// "between LO and HI", to as many significant digits as keep each end within a
+    /// thousandth of the band's width of its value (at least 4).
     std::string words() const {
-        return "between " + num(static_cast<double>(lo)) + " and " + num(static_cast<double>(hi));
+        const real width = hi - lo, size = std::max(std::fabs(lo), std::fabs(hi));
+        int digits = 4;
+        if (width > 0 && size > 0) digits = std::clamp(static_cast<int>(std::ceil(std::log10(size / width))) + 3, 4, 17);
+        else digits = 17;
+        return "between " + rounded(lo, digits) + " and " + rounded(hi, digits);
+    }
+    static std::string rounded(real x, int digits) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(x));
+        return buf;
     }
 };
 inline band fresnel_band(real eta1, real eta2, real cos_i) {
     const real s = schlick(eta1, eta2, cos_i), e = fresnel_exact(eta1, eta2, cos_i);
     return {std::min(s, e) - 0.02L, std::max(s, e) + 0.02L};
+}
+/// The transmitted weight kst (1 - F) for F in `f`.
+inline band transmitted_weight(const band& f, real kst) { return {kst * (1 - f.hi), kst * (1 - f.lo)}; }
+
+/// \brief A common mistake, and the weight it gives: when a failed check's value is that
+/// weight, the message names the mistake as the likely cause.
+struct suspect {
+    band weight;
+    std::string mistake;
+};
+/// The usual mistakes in w_t = kst (1 - F) from index `eta1` into `eta2` at incidence
+/// cosine `cos_i` (Schlick, stage_04.hh step 5): the cosine taken on the wrong side of the
+/// surface, R0 not squared, kst F in place of kst (1 - F), and kst with no F. Each weight is the mistake's
+/// value within 0.005; check_bounced names one only where its weight lies wholly outside
+/// the right one's band (near the normal, the two cosines give nearly the same F).
+inline std::vector<suspect> transmitted_suspects(real eta1, real eta2, real cos_i, real kst) {
+    const real eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
+    std::vector<suspect> out;
+    if (k < 0) return out;  // total internal reflection: nothing is transmitted
+    const real cos_t = std::sqrt(k), right_cos = eta1 <= eta2 ? cos_i : cos_t, wrong_cos = eta1 <= eta2 ? cos_t : cos_i;
+    const real r0 = ((eta1 - eta2) / (eta1 + eta2)) * ((eta1 - eta2) / (eta1 + eta2));
+    const real unsquared = (eta1 - eta2) / (eta1 + eta2);
+    const auto f = [](real r, real c) { return r + (1 - r) * std::pow(1 - c, 5); };
+    const auto near = [&](real w) { return band{w - 0.005L, w + 0.005L}; };
+    out.push_back({near(kst * (1 - f(r0, wrong_cos))),
+                   std::string("Schlick's F with the cosine on the wrong side (") +
+                       (eta1 <= eta2 ? "cos_t, in the glass; entering glass it takes cos_i, in the air)"
+                                     : "cos_i, in the glass; leaving glass it takes cos_t, in the air)")});
+    out.push_back({near(kst * (1 - f(unsquared, right_cos))), "Schlick's F with R0 = (n1 - n2) / (n1 + n2), not squared"});
+    out.push_back({near(kst * f(r0, right_cos)), "kst F, the reflected share, in place of kst (1 - F)"});
+    out.push_back({near(kst), "kst alone, without the (1 - F) that Fresnel's reflection leaves"});
+    return out;
 }
 
 /// Snell's law in long double: the transmitted direction of unit `d` at a surface whose
@@ -579,7 +623,8 @@ inline band scaled(const band& b, real k, real tol = 1e-9L) { return {b.lo * k -
 /// emitter seen along `at`: `weight` times your tracer's colour of that emitter, the other
 /// channels 0.
 inline void check_bounced(tally& t, bench& b, const ray& r, int depth, const ray& at, double color::*channel,
-                          const band& weight, const std::string& name, const std::string& rule) {
+                          const band& weight, const std::string& name, const std::string& rule,
+                          const std::vector<suspect>& suspects = {}) {
     traced seen;
     if (!emitter_shows(t, b.w.s, at, channel, name, seen)) return;
     const bounced got = b.bounces(r, depth);
@@ -589,15 +634,28 @@ inline void check_bounced(tally& t, bench& b, const ray& r, int depth, const ray
         if (other != channel) ok = ok && got.ok() && std::fabs(got.part.*other - seen.c.*other * (got.part.*channel / seen.c.*channel)) <= 1e-9;
     const std::string channel_name = channel == &color::r ? "red" : channel == &color::g ? "green" : "blue";
     t.check(ok, [&] {
-        return "the bounces should bring back w times what your tracer shows for " + name + ", " + show(seen.c) +
-               ", with w " + weight.words() + " (" + rule + "): " + channel_name + " " + want.words() +
-               ", the other channels 0; they brought back " + got.words() + ". Asked: " + b.about(r, depth);
+        // What matters first (a report quotes the first 500 characters): the rule, the
+        // weight it asks for, yours, and the likely mistake; then the ray; then how w is read.
+        std::string yours = got.words();
+        if (got.ok()) {
+            yours = band::rounded(got.part.*channel / seen.c.*channel, 6);
+            for (const suspect& s : suspects)  // named only where it cannot be mistaken for the right weight
+                if ((s.weight.hi < weight.lo || s.weight.lo > weight.hi) &&
+                    scaled(s.weight, seen.c.*channel).holds(got.part.*channel)) {
+                    yours += ", the w of " + s.mistake;
+                    break;
+                }
+        }
+        return rule + ": w " + weight.words() + "; yours is " + yours + ". Asked: " + b.about(r, depth) + ". (w is what the bounces bring back, in " +
+               channel_name + ", over what your tracer shows for " + name + ", " + show(seen.c) +
+               ", the other channels 0: " + channel_name + " " + want.words() + "; they brought back " + got.words() + ".)";
     });
 }
 /// w_t alone, read on the patch where the transmitted ray lands.
 inline void check_transmitted_weight(tally& t, bench& b, const ray& r, int depth, const band& w_t,
-                                     const std::string& rule) {
-    check_bounced(t, b, r, depth, b.at_patch(), &color::g, w_t, "the green patch", "w_t = kst (1 - F); " + rule);
+                                     const std::string& rule, const std::vector<suspect>& suspects = {}) {
+    check_bounced(t, b, r, depth, b.at_patch(), &color::g, w_t, "the green patch", "w_t = kst (1 - F); " + rule,
+                  suspects);
 }
 /// w_r + w_t, read with an emitter on each side.
 inline void check_total_weight(tally& t, bench& b, const ray& r, int depth, const band& total, const std::string& rule) {

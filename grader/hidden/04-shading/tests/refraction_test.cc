@@ -51,8 +51,6 @@ void check_transmitted(tally& t, const std::vector<ray>& log, const rvec& p, con
 
 band exactly(real x, real tol = 1e-9L) { return {x - tol, x + tol}; }
 /// kst * (1 - F) for F anywhere in `f`.
-band transmitted_weight(const band& f, real kst) { return {kst * (1 - f.hi), kst * (1 - f.lo)}; }
-
 
 /// The angle, a little off the normal, at which "normal incidence" is graded: there F is
 /// R0 to 1e-12 (Schlick) or 1e-5 (exact), and the transmitted ray already misses the
@@ -136,7 +134,8 @@ TEST_CASE("refraction: near normal incidence F = R0 = ((ior - 1) / (ior + 1))^2"
         const real r0 = ((ior - 1.0L) / (ior + 1.0L)) * ((ior - 1.0L) / (ior + 1.0L));
         check_transmitted_weight(t, b, r, 3, transmitted_weight(tight_fresnel(1, ior, b.cos_i(r)), 1),
                                  num(static_cast<double>(near_normal)) + " degrees from the normal F = R0 = " +
-                                     num(static_cast<double>(r0)) + ", so w_t = 1 - R0");
+                                     num(static_cast<double>(r0)) + ", so w_t = 1 - R0",
+                                 transmitted_suspects(1, ior, b.cos_i(r), 1));
     }
     t.report();
 }
@@ -150,7 +149,8 @@ TEST_CASE("refraction: towards 90 degrees from the normal F goes to 1", "[04][re
             if (!placed_patch(t, b, r)) continue;
             const band f = fresnel_band(1, ior, b.cos_i(r));
             check_transmitted_weight(t, b, r, 3, transmitted_weight(f, 1),
-                                     "nearly all the light is reflected: F " + f.words() + ", little is transmitted");
+                                     "nearly all the light is reflected: F " + f.words() + ", little is transmitted",
+                                     transmitted_suspects(1, ior, b.cos_i(r), 1));
         }
     t.report();
 }
@@ -169,14 +169,16 @@ TEST_CASE("refraction: glass with both ksr and kst transmits kst (1 - F), and w_
                 if (placed_patch(t, b, straight))
                     check_transmitted_weight(t, b, straight, 3,
                                              transmitted_weight(tight_fresnel(1, ior, b.cos_i(straight)), kst),
-                                             "near the normal F = R0 = " + num(static_cast<double>(r0)));
+                                             "near the normal F = R0 = " + num(static_cast<double>(r0)),
+                                             transmitted_suspects(1, ior, b.cos_i(straight), kst));
             }
             {
                 bench b(glass(ior, ksr, kst), false);
                 const ray slant = b.at_angle(radians(70.0L), 1.0L);
                 const band f = fresnel_band(1, ior, b.cos_i(slant));
                 if (placed_patch(t, b, slant))
-                    check_transmitted_weight(t, b, slant, 3, transmitted_weight(f, kst), "F " + f.words());
+                    check_transmitted_weight(t, b, slant, 3, transmitted_weight(f, kst), "F " + f.words(),
+                                             transmitted_suspects(1, ior, b.cos_i(slant), kst));
             }
             {
                 // Whatever F is, w_r + w_t = ksr + kst: the same emitter on both sides.
@@ -226,7 +228,9 @@ TEST_CASE("refraction: at oblique angles F is between Schlick's approximation an
             if (!placed_patch(t, b, r)) continue;
             const band f = fresnel_band(1, ior, b.cos_i(r));
             check_transmitted_weight(t, b, r, 3, transmitted_weight(f, 1),
-                                     "entering glass, Schlick's F uses cos_i: F " + f.words());
+                                     "entering glass, Schlick's F takes cos_i and R0 = ((n1 - n2) / (n1 + n2))^2: F " +
+                                         f.words(),
+                                     transmitted_suspects(1, ior, b.cos_i(r), 1));
         }
     t.report();
 }
