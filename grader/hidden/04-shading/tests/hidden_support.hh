@@ -103,9 +103,9 @@ struct band {
     /// thousandth of the band's width of its value (at least 4).
     std::string words() const {
         const real width = hi - lo, size = std::max(std::fabs(lo), std::fabs(hi));
-        int digits = 4;
-        if (width > 0 && size > 0) digits = std::clamp(static_cast<int>(std::ceil(std::log10(size / width))) + 3, 4, 17);
-        else digits = 17;
+        int digits = 17;  // a band of one value, or an end that is not finite: every digit
+        if (width > 0 && size > 0 && std::isfinite(width) && std::isfinite(size))
+            digits = static_cast<int>(std::clamp(std::ceil(std::log10(size / width)) + 3, 4.0L, 17.0L));
         return "between " + rounded(lo, digits) + " and " + rounded(hi, digits);
     }
     static std::string rounded(real x, int digits) {
