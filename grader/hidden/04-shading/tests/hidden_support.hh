@@ -129,9 +129,10 @@ struct suspect {
 };
 /// The usual mistakes in w_t = kst (1 - F) from index `eta1` into `eta2` at incidence
 /// cosine `cos_i` (Schlick, stage_04.hh step 5): the cosine taken on the wrong side of the
-/// surface, R0 not squared, kst F in place of kst (1 - F), and kst with no F. Each weight is the mistake's
-/// value within 0.005; check_bounced names one only where its weight lies wholly outside
-/// the right one's band (near the normal, the two cosines give nearly the same F).
+/// surface, R0 not squared, kst F in place of kst (1 - F), and kst with no F. Each weight
+/// is the mistake's value within 0.005; check_bounced names one only where its weight lies
+/// wholly outside the right one's band (near the normal, the two cosines give nearly the
+/// same F).
 inline std::vector<suspect> transmitted_suspects(real eta1, real eta2, real cos_i, real kst) {
     const real eta = eta1 / eta2, k = 1 - eta * eta * (1 - cos_i * cos_i);
     std::vector<suspect> out;
@@ -639,6 +640,7 @@ inline void check_bounced(tally& t, bench& b, const ray& r, int depth, const ray
         std::string yours = got.words();
         if (got.ok()) {
             yours = band::rounded(got.part.*channel / seen.c.*channel, 6);
+            if (want.holds(got.part.*channel)) yours += ", but the other channels are not 0 (below)";
             for (const suspect& s : suspects)  // named only where it cannot be mistaken for the right weight
                 if ((s.weight.hi < weight.lo || s.weight.lo > weight.hi) &&
                     scaled(s.weight, seen.c.*channel).holds(got.part.*channel)) {
@@ -646,9 +648,10 @@ inline void check_bounced(tally& t, bench& b, const ray& r, int depth, const ray
                     break;
                 }
         }
-        return rule + ": w " + weight.words() + "; yours is " + yours + ". Asked: " + b.about(r, depth) + ". (w is what the bounces bring back, in " +
-               channel_name + ", over what your tracer shows for " + name + ", " + show(seen.c) +
-               ", the other channels 0: " + channel_name + " " + want.words() + "; they brought back " + got.words() + ".)";
+        return rule + ": w " + weight.words() + "; yours is " + yours + ". Asked: " + b.about(r, depth) +
+               ". (w is what the bounces bring back, in " + channel_name + ", over what your tracer shows for " + name +
+               ", " + show(seen.c) + ", the other channels 0: " + channel_name + " " + want.words() +
+               "; they brought back " + got.words() + ".)";
     });
 }
 /// w_t alone, read on the patch where the transmitted ray lands.
