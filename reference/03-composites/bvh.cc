@@ -6,7 +6,8 @@
 // subtrees per node (I. Wald, C. Benthin and S. Boulos, "Getting rid of packets", IEEE
 // Symposium on Interactive Ray Tracing 2008; Embree's BVH4 is such a tree): a ray tests
 // the four boxes of a node at once, in one vector of floats, and visits half as many
-// nodes as in the binary tree. Each node is two 64-byte cache lines; its boxes are
+// nodes as in the binary tree. Each node is two 64-byte cache lines; a lane holding one
+// child points at the child itself, so reaching it loads nothing in between; its boxes are
 // rounded outwards to float, and the slab test's own rounding is covered, so no hit is
 // lost (A. Williams, S. Barrus, R. K. Morley and P. Shirley, "An efficient and robust
 // ray-box intersection algorithm", JGT 10(1), 2005; M. Pharr, W. Jakob and G. Humphreys,
@@ -97,23 +98,26 @@ using mask4 = std::int32_t __attribute__((vector_size(16)));
 constexpr float far_stretch = 1 + 4 * (3 * 0x1p-24f / (1 - 3 * 0x1p-24f));
 
 /// A ray prepared for many slab tests in float: per axis, the reciprocal direction, which
-/// face of a box it meets first (1 when the direction is negative: the high face), and the
-/// origin rounded twice. The near distance is taken from the float origin rounded so that
-/// it comes out no larger than the exact one, the far distance from the one rounded the
-/// other way, so the origin's rounding to float never moves a face across it. A zero
+/// face of a box it meets first and which last (as rows of a node's bounds read as six
+/// rows, low x, y, z then high x, y, z: the high face comes first when the direction is
+/// negative), and the origin rounded twice. The near distance is taken from the float
+/// origin rounded so that it comes out no larger than the exact one, the far distance
+/// from the one rounded the other way, so the origin's rounding to float never moves a
+/// face across it. A zero
 /// direction component has the reciprocal +-infinity (as does one below 3e-39 in
 /// magnitude, whose reciprocal no float holds), which the slab test handles. Each value
 /// is held in all four lanes, ready for a node's four boxes.
 struct slab_ray {
     float4 origin_near[3], origin_far[3], inverse[3];
-    int first_face[3];
+    int near_row[3], far_row[3];
     explicit slab_ray(const ray& r) {
         const point& o = r.origin();
         const vector& d = r.direction();
         const double dir[3] = {d.x, d.y, d.z}, from[3] = {o.x, o.y, o.z};
         for (int k = 0; k < 3; ++k) {
             const bool negative = std::signbit(dir[k]);
-            first_face[k] = negative ? 1 : 0;
+            near_row[k] = negative ? 3 + k : k;
+            far_row[k] = negative ? k : 3 + k;
             inverse[k] = float4{} + 1 / static_cast<float>(dir[k]);
             // (face - origin) * inverse is smallest with the origin rounded up when the
             // direction is positive, and with it rounded down when it is negative.
@@ -141,12 +145,52 @@ public:
     }
 
 private:
-    /// Where a subtree is: an inner node, or a leaf's run of children in order_.
-    /// (No default values, so that the walk's stack of them is not cleared for each ray.)
+    /// Where a subtree is, as the binary tree holds it: an inner node, or a leaf's run of
+    /// items.
     struct subtree {
-        std::uint32_t index;  // count 0: nodes_[index]; otherwise order_[index, index + count)
+        std::uint32_t index;  // count 0: binary[index]; otherwise items[index, index + count)
         std::uint32_t count;  // a leaf: how many children it holds
     };
+
+    /// Where a lane of a node leads, in 8 bytes: another node, one child (a pointer to the
+    /// child itself, so that the walk loads nothing between a node and the child it
+    /// calls), or a leaf's run of children in order_, for a leaf too big for the lanes
+    /// left. The two low bits say which (a child's address is a multiple of 8, so they
+    /// are free); a lane without a subtree holds 0.
+    /// (No default value, so that the walk's stack of them is not cleared for each ray.)
+    class link {
+    public:
+        link() = default;
+        static link none() { return from_bits(0); }
+        static link to_node(std::uint32_t index) { return from_bits(std::uint64_t{index} << 2 | node_tag); }
+        static link to_child(const rtab_component* c) {
+            return from_bits(reinterpret_cast<std::uintptr_t>(c) | child_tag);
+        }
+        /// order_[index, index + count), count at most 64 (the largest leaf_size).
+        static link to_run(std::uint32_t index, std::uint32_t count) {
+            return from_bits(std::uint64_t{index} << 9 | std::uint64_t{count} << 2 | run_tag);
+        }
+
+        bool is_none() const { return bits_ == 0; }
+        bool is_node() const { return (bits_ & tag_mask) == node_tag; }
+        bool is_child() const { return (bits_ & tag_mask) == child_tag; }
+        std::uint32_t node_index() const { return static_cast<std::uint32_t>(bits_ >> 2); }
+        const rtab_component* child() const {
+            return reinterpret_cast<const rtab_component*>(static_cast<std::uintptr_t>(bits_ & ~tag_mask));
+        }
+        std::uint32_t run_index() const { return static_cast<std::uint32_t>(bits_ >> 9); }
+        std::uint32_t run_count() const { return static_cast<std::uint32_t>(bits_ >> 2 & 127); }
+
+    private:
+        static constexpr std::uint64_t tag_mask = 3, node_tag = 1, child_tag = 2, run_tag = 3;
+        static link from_bits(std::uint64_t bits) {
+            link l;
+            l.bits_ = bits;
+            return l;
+        }
+        std::uint64_t bits_;
+    };
+    static_assert(alignof(rtab_component) >= 4, "a link keeps its tag in a child's two low address bits");
 
     /// The binary tree as the surface area heuristic builds it, in double; build() then
     /// collapses it into nodes_ and drops it.
@@ -158,15 +202,14 @@ private:
     /// An inner node: the boxes of up to four subtrees, lane by lane, and where they are.
     /// Leaves are not nodes: a leaf is a run of children that its parent points to. A lane
     /// without a subtree has the empty box (low corner +infinity, high -infinity), which
-    /// every ray misses, and the subtree {0, 0} (the root, no node's child).
+    /// every ray misses, and link::none().
     struct alignas(64) node {
         float4 bounds[2][3];  // [0 low corner, 1 high corner][axis], rounded outwards
-        subtree child[4];
+        link child[4];
         /// How many lanes hold a subtree, so how many boxes a visit tests: 2 to 4.
-        int lanes() const { return 2 + !is_empty(child[2]) + !is_empty(child[3]); }
+        int lanes() const { return 2 + !child[2].is_none() + !child[3].is_none(); }
     };
     static_assert(sizeof(node) == 128);
-    static bool is_empty(const subtree& s) { return (s.index | s.count) == 0; }
 
     struct item {
         box3 bounds;
@@ -193,7 +236,7 @@ private:
         binary.reserve(items.size());
         const subtree binary_root = build_subtree(binary, items, 0, items.size(), 0, root_);
         nodes_.reserve(binary.size() / 2 + 1);  // a node takes the place of 1 to 3 binary ones
-        root_subtree_ = binary_root.count > 0 ? binary_root : subtree{collapse(binary, items, binary_root.index), 0};
+        root_link_ = to_link(binary, items, binary_root);
         nodes_.shrink_to_fit();
         order_.reserve(items.size());
         for (const item& it : items) order_.push_back(it.object);
@@ -245,10 +288,18 @@ private:
         nodes_.emplace_back();
         for (int c = 0; c < 4; ++c) set_lane(nodes_[at].bounds, c, c < used ? &lanes[c].bounds : nullptr);
         for (int c = 0; c < used; ++c) {
-            const subtree child = lanes[c].where.count > 0 ? lanes[c].where : subtree{collapse(binary, items, lanes[c].where.index), 0};
+            const link child = to_link(binary, items, lanes[c].where);
             nodes_[at].child[c] = child;  // after the call, which may move nodes_
         }
         return at;
+    }
+
+    /// The link to `where`: an inner node is collapse()d into nodes_; a leaf of one child
+    /// points at the child, a bigger one at its run (items are in order_'s order).
+    link to_link(const std::vector<binary_node>& binary, const std::vector<item>& items, subtree where) const {
+        if (where.count == 0) return link::to_node(collapse(binary, items, where.index));
+        if (where.count == 1) return link::to_child(items[where.index].object);
+        return link::to_run(where.index, where.count);
     }
 
     /// Builds the subtree of items[begin, end), whose box is `bounds`; returns where it is.
@@ -349,16 +400,26 @@ private:
     /// face of such a slab, compares false and so never replaces t0 or t1: that slab
     /// limits nothing. `t_max` is float_limit() of the best hit, so stretched already.
     static mask4 slabs(const float4 (&bounds)[2][3], const slab_ray& sr, float4 t_max, float4& t_near) {
+        const float4* const rows = &bounds[0][0];  // low x, y, z, high x, y, z
         float4 t0 = {0, 0, 0, 0}, t1 = {INFINITY, INFINITY, INFINITY, INFINITY};
         for (int k = 0; k < 3; ++k) {
-            const float4 near = (bounds[sr.first_face[k]][k] - sr.origin_near[k]) * sr.inverse[k];
-            const float4 far = (bounds[1 - sr.first_face[k]][k] - sr.origin_far[k]) * sr.inverse[k];
+            const float4 near = (rows[sr.near_row[k]] - sr.origin_near[k]) * sr.inverse[k];
+            const float4 far = (rows[sr.far_row[k]] - sr.origin_far[k]) * sr.inverse[k];
             t0 = near > t0 ? near : t0;
             t1 = far < t1 ? far : t1;
         }
         t1 *= far_stretch;
         t_near = t0;
         return (t0 <= t1) & (t0 <= t_max);
+    }
+
+    /// Starts loading the first 64 bytes of `child` (two cache lines where they straddle
+    /// one's end), where a child keeps its vtable pointer and usually its shape, so that
+    /// they are on their way while the walk goes on.
+    static void prefetch(const rtab_component* child) {
+        const char* const bytes = reinterpret_cast<const char*>(child);
+        __builtin_prefetch(bytes);
+        __builtin_prefetch(bytes + 63);
     }
 
     /// Bit c set where lane c of `enters` is true (-1): on x86 one instruction, movmskps,
@@ -380,7 +441,7 @@ private:
         count_bounding_volume_tests(1);
         if (!enters_root[0]) return intersection::none();
         struct entry {
-            subtree where;
+            link to;
             float t_near;
         };
         // Near-first leaves at most three entries per level waiting.
@@ -389,35 +450,39 @@ private:
         std::uint64_t box_tests = 0;
         intersection best = intersection::none();
         float4 t_max = float4{} + INFINITY;  // float_limit(best.t) once there is a best hit
-        subtree where = root_subtree_;       // the subtree walked now
+        link at = root_link_;                // the subtree walked now
         while (true) {
-            if (where.count > 0) {  // a leaf
-                for (std::uint32_t k = where.index; k < where.index + where.count; ++k) {
-                    const intersection i = order_[k]->intersect(r);
+            if (!at.is_node()) {  // a leaf: one child, or a run of them in order_
+                const std::uint32_t count = at.is_child() ? 1 : at.run_count();
+                for (std::uint32_t k = 0; k < count; ++k) {
+                    const rtab_component* const child = at.is_child() ? at.child() : order_[at.run_index() + k];
+                    const intersection i = child->intersect(r);
                     if (i.nearer_than(best)) best = i;
                 }
                 if (best.hit()) t_max = float4{} + float_limit(best.t);
             } else {
-                const node& nd = nodes_[where.index];
+                const node& nd = nodes_[at.node_index()];
                 float4 t_near;
                 const int enters = lane_bits(slabs(nd.bounds, sr, t_max, t_near));
                 box_tests += static_cast<std::uint64_t>(nd.lanes());
                 if (enters != 0) {
                     // Walk the nearest entered subtree next. The others wait on the stack,
                     // farthest at the bottom (an insertion sort of at most three), so that
-                    // the nearest of them comes off first.
+                    // the nearest of them comes off first. A child entered is fetched from
+                    // memory now, while the others are sorted and walked.
                     const std::size_t first = top;
-                    entry nearest{{0, 0}, INFINITY};  // none yet: the first lane entered replaces it
+                    entry nearest{link::none(), INFINITY};  // none yet: the first lane entered replaces it
                     for (int c = 0; c < 4; ++c) {
                         if (!(enters >> c & 1)) continue;
                         entry other{nd.child[c], t_near[c]};
+                        if (other.to.is_child()) prefetch(other.to.child());
                         if (other.t_near <= nearest.t_near) std::swap(other, nearest);
-                        if (is_empty(other.where)) continue;  // that was the first lane entered
-                        std::size_t at = top++;
-                        for (; at > first && stack[at - 1].t_near < other.t_near; --at) stack[at] = stack[at - 1];
-                        stack[at] = other;
+                        if (other.to.is_none()) continue;  // that was the first lane entered
+                        std::size_t slot = top++;
+                        for (; slot > first && stack[slot - 1].t_near < other.t_near; --slot) stack[slot] = stack[slot - 1];
+                        stack[slot] = other;
                     }
-                    where = nearest.where;
+                    at = nearest.to;
                     continue;
                 }
             }
@@ -425,7 +490,7 @@ private:
             // before the best hit; those beyond it are dropped.
             while (top > 0 && stack[top - 1].t_near > t_max[0]) --top;
             if (top == 0) break;
-            where = stack[--top].where;
+            at = stack[--top].to;
         }
         count_bounding_volume_tests(box_tests);
         return best.hit() ? best : intersection::composite_only(this);
@@ -433,7 +498,7 @@ private:
 
     mutable box3 root_;                                 // the children's box, exactly
     mutable float4 root_box_[2][3];  // root_ rounded outwards in lane 0, as a node's boxes; lanes 1 to 3 empty
-    mutable subtree root_subtree_{};                   // the root: nodes_[0], or one leaf
+    mutable link root_link_ = link::none();            // the root: nodes_[0], or one leaf
     mutable std::vector<node> nodes_;                  // the inner nodes, parent first (built by ensure_built)
     mutable std::vector<const rtab_component*> order_;  // the children as the leaves hold them
 };
