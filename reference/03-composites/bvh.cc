@@ -103,10 +103,9 @@ constexpr float far_stretch = 1 + 4 * (3 * 0x1p-24f / (1 - 3 * 0x1p-24f));
 /// negative), and the origin rounded twice. The near distance is taken from the float
 /// origin rounded so that it comes out no larger than the exact one, the far distance
 /// from the one rounded the other way, so the origin's rounding to float never moves a
-/// face across it. A zero
-/// direction component has the reciprocal +-infinity (as does one below 3e-39 in
-/// magnitude, whose reciprocal no float holds), which the slab test handles. Each value
-/// is held in all four lanes, ready for a node's four boxes.
+/// face across it. A zero direction component has the reciprocal +-infinity (as does one
+/// below 3e-39 in magnitude, whose reciprocal no float holds), which the slab test
+/// handles. Each value is held in all four lanes, ready for a node's four boxes.
 struct slab_ray {
     float4 origin_near[3], origin_far[3], inverse[3];
     int near_row[3], far_row[3];
@@ -162,26 +161,29 @@ private:
     public:
         link() = default;
         static link none() { return from_bits(0); }
-        static link to_node(std::uint32_t index) { return from_bits(std::uint64_t{index} << 2 | node_tag); }
+        static link to_node(std::uint32_t index) { return from_bits(std::uint64_t{index} << tag_bits | node_tag); }
         static link to_child(const rtab_component* c) {
             return from_bits(reinterpret_cast<std::uintptr_t>(c) | child_tag);
         }
         /// order_[index, index + count), count at most 64 (the largest leaf_size).
         static link to_run(std::uint32_t index, std::uint32_t count) {
-            return from_bits(std::uint64_t{index} << 9 | std::uint64_t{count} << 2 | run_tag);
+            return from_bits((std::uint64_t{index} << count_bits | count) << tag_bits | run_tag);
         }
 
         bool is_none() const { return bits_ == 0; }
         bool is_node() const { return (bits_ & tag_mask) == node_tag; }
         bool is_child() const { return (bits_ & tag_mask) == child_tag; }
-        std::uint32_t node_index() const { return static_cast<std::uint32_t>(bits_ >> 2); }
+        std::uint32_t node_index() const { return static_cast<std::uint32_t>(bits_ >> tag_bits); }
         const rtab_component* child() const {
             return reinterpret_cast<const rtab_component*>(static_cast<std::uintptr_t>(bits_ & ~tag_mask));
         }
-        std::uint32_t run_index() const { return static_cast<std::uint32_t>(bits_ >> 9); }
-        std::uint32_t run_count() const { return static_cast<std::uint32_t>(bits_ >> 2 & 127); }
+        std::uint32_t run_index() const { return static_cast<std::uint32_t>(bits_ >> (tag_bits + count_bits)); }
+        std::uint32_t run_count() const {
+            return static_cast<std::uint32_t>(bits_ >> tag_bits & ((std::uint64_t{1} << count_bits) - 1));
+        }
 
     private:
+        static constexpr int tag_bits = 2, count_bits = 7;  // a run's count: 1 to 64 fits in 7 bits
         static constexpr std::uint64_t tag_mask = 3, node_tag = 1, child_tag = 2, run_tag = 3;
         static link from_bits(std::uint64_t bits) {
             link l;
