@@ -24,7 +24,9 @@
 //
 // N rays of each kind (primary: the nearest square, default 1000 x 1000); only the kinds
 // named (default both, so that a profile can take one); R passes of each trace, the
-// fastest reported (default 1). Build the release preset to run it.
+// reference's and Embree's by turns, the fastest of each side reported (default 1), and
+// with R > 1 the median, lowest and highest ratio of the R pairs of passes. Build the
+// release preset to run it.
 #include <malloc.h>
 
 #include <algorithm>
@@ -258,12 +260,6 @@ void run_scene(const std::string& name, const options& o) {
         vl_rays.reserve(rays.size());
         for (const ray_f& r : rays) vl_rays.push_back(to_vl_ray(r));
         std::vector<vl::intersection> ref_hits(rays.size());
-        const vl::intersection_counts counts_before = vl::counts();
-        const double ref_s = fastest(o.repeat, [&] {
-            for (std::size_t i = 0; i < rays.size(); ++i) ref_hits[i] = ref.bvh().intersect(vl_rays[i]);
-        });
-        const vl::intersection_counts cost = vl::counts() - counts_before;
-
         std::vector<RTCRayHit> asked;
         asked.reserve(rays.size());
         for (const ray_f& r : rays) asked.push_back(embree_scene::ray_hit(r, zero_t));
@@ -272,13 +268,27 @@ void run_scene(const std::string& name, const options& o) {
         rtcInitIntersectContext(&context);
         context.flags = kind == "primary" ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
                                                        : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-        double emb_s = INFINITY;
+        // The passes alternate, one of the reference's then one of Embree's, so that a
+        // stretch of the machine's other load slows both alike; each side's fastest pass
+        // is reported, and each pair's ratio too, to show how far the load moved it.
+        double ref_s = INFINITY, emb_s = INFINITY;
+        std::vector<double> pass_ratios;
+        vl::intersection_counts cost{};
         for (int k = 0; k < o.repeat; ++k) {
+            const vl::intersection_counts counts_before = vl::counts();
+            const double ref_pass = fastest(1, [&] {
+                for (std::size_t i = 0; i < rays.size(); ++i) ref_hits[i] = ref.bvh().intersect(vl_rays[i]);
+            });
+            cost += vl::counts() - counts_before;
             emb_hits = asked;
-            emb_s = std::min(emb_s, fastest(1, [&] {
+            const double emb_pass = fastest(1, [&] {
                 for (RTCRayHit& h : emb_hits) emb.intersect(context, h);
-            }));
+            });
+            ref_s = std::min(ref_s, ref_pass);
+            emb_s = std::min(emb_s, emb_pass);
+            pass_ratios.push_back(emb_pass / ref_pass);
         }
+        std::sort(pass_ratios.begin(), pass_ratios.end());
 
         std::size_t agreeing = 0, same_primitive = 0, ref_hit_count = 0, emb_hit_count = 0;
         std::size_t decided[5] = {};  // the rays that differ, by what long double says (exact_hits.hh)
@@ -294,6 +304,12 @@ void run_scene(const std::string& name, const options& o) {
         const double ref_mrays = rays.size() / ref_s / 1e6, emb_mrays = rays.size() / emb_s / 1e6;
         std::printf("scene=%s rays=%s reference_mrays=%.3g embree_mrays=%.3g ratio=%.3g\n", name.c_str(), kind.c_str(),
                     ref_mrays, emb_mrays, ref_mrays / emb_mrays);
+        if (pass_ratios.size() > 1) {
+            const std::size_t n = pass_ratios.size();
+            const double median = n % 2 ? pass_ratios[n / 2] : (pass_ratios[n / 2 - 1] + pass_ratios[n / 2]) / 2;
+            std::printf("scene=%s rays=%s pass_ratios: median=%.3g lowest=%.3g highest=%.3g\n", name.c_str(),
+                        kind.c_str(), median, pass_ratios.front(), pass_ratios.back());
+        }
         const double passes = double(o.repeat) * double(rays.size());
         std::printf("scene=%s rays=%s reference_per_ray: box_tests=%.3g child_tests=%.3g\n", name.c_str(), kind.c_str(),
                     double(cost.bounding_volume_tests) / passes,
