@@ -147,15 +147,11 @@ std::vector<ray_f> primary_rays(int side) {
     return rays;
 }
 
-/// The fastest of `repeat` runs of `f`, in seconds.
-double fastest(int repeat, const std::function<void()>& f) {
-    double best = INFINITY;
-    for (int i = 0; i < repeat; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        f();
-        best = std::min(best, seconds_since(start));
-    }
-    return best;
+/// How long one run of `f` takes, in seconds.
+double seconds_of(const std::function<void()>& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    return seconds_since(start);
 }
 
 bool agree(const hit_record& a, const hit_record& b) {
@@ -248,11 +244,11 @@ void run_scene(const std::string& name, const options& o) {
     const std::size_t heap_before = heap_in_use();
     reference_scene ref(s);
     const vl::ray first = to_vl_ray(ray_sets.at("primary").front());
-    const double ref_build = fastest(1, [&] { (void)ref.bvh().intersect(first); });
+    const double ref_build = seconds_of([&] { (void)ref.bvh().intersect(first); });
     const std::size_t heap_after = heap_in_use();
 
     embree_scene emb(s);
-    const double emb_build = fastest(1, [&] { emb.commit(); });
+    const double emb_build = seconds_of([&] { emb.commit(); });
 
     for (const std::string& kind : o.kinds) {
         const std::vector<ray_f>& rays = ray_sets.at(kind);
@@ -276,12 +272,12 @@ void run_scene(const std::string& name, const options& o) {
         vl::intersection_counts cost{};
         for (int k = 0; k < o.repeat; ++k) {
             const vl::intersection_counts counts_before = vl::counts();
-            const double ref_pass = fastest(1, [&] {
+            const double ref_pass = seconds_of([&] {
                 for (std::size_t i = 0; i < rays.size(); ++i) ref_hits[i] = ref.bvh().intersect(vl_rays[i]);
             });
             cost += vl::counts() - counts_before;
             emb_hits = asked;
-            const double emb_pass = fastest(1, [&] {
+            const double emb_pass = seconds_of([&] {
                 for (RTCRayHit& h : emb_hits) emb.intersect(context, h);
             });
             ref_s = std::min(ref_s, ref_pass);
