@@ -20,12 +20,14 @@
 //     wrong.
 //
 //   embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,mesh,...] [--kinds primary,incoherent]
-//                [--repeat R]
+//                [--repeat R] [--embree-config CONFIG]
 //
 // N rays of each kind (primary: the nearest square, default 1000 x 1000); only the kinds
 // named (default both, so that a profile can take one); R passes of each trace, the
 // reference's and Embree's by turns, the fastest of each side reported (default 1), and
-// with R > 1 the median, lowest and highest ratio of the R pairs of passes. Build the
+// with R > 1 the median, lowest and highest ratio of the R pairs of passes; CONFIG is the
+// string rtcNewDevice() is given (default "threads=1"; "threads=1,verbose=2" makes Embree
+// print, among much else, which tree and which instruction set it chose). Build the
 // release preset to run it.
 #include <malloc.h>
 
@@ -190,6 +192,7 @@ struct options {
     std::vector<std::string> scenes{"spheres-100k", "spheres-1m", "mesh"};
     std::vector<std::string> kinds{"primary", "incoherent"};
     int repeat = 1;
+    std::string embree_config = "threads=1";
 };
 
 options parse(int argc, char** argv) {
@@ -204,6 +207,8 @@ options parse(int argc, char** argv) {
             o.rays = std::stoul(value());
         } else if (a == "--repeat") {
             o.repeat = std::max(1, std::stoi(value()));
+        } else if (a == "--embree-config") {
+            o.embree_config = value();
         } else if (a == "--scenes" || a == "--kinds") {
             std::vector<std::string>& names = a == "--scenes" ? o.scenes : o.kinds;
             names.clear();
@@ -212,7 +217,7 @@ options parse(int argc, char** argv) {
         } else {
             throw std::runtime_error(
                 "usage: embree_bench [--rays N] [--scenes spheres-100k,spheres-1m,spheres-N,mesh] [--kinds primary,incoherent] "
-                "[--repeat R]");
+                "[--repeat R] [--embree-config CONFIG]");
         }
     }
     if (o.rays == 0) throw std::runtime_error("--rays must be at least 1");
@@ -247,7 +252,7 @@ void run_scene(const std::string& name, const options& o) {
     const double ref_build = seconds_of([&] { (void)ref.bvh().intersect(first); });
     const std::size_t heap_after = heap_in_use();
 
-    embree_scene emb(s);
+    embree_scene emb(s, o.embree_config.c_str());
     const double emb_build = seconds_of([&] { emb.commit(); });
 
     for (const std::string& kind : o.kinds) {
@@ -330,8 +335,8 @@ void run_scene(const std::string& name, const options& o) {
 int main(int argc, char** argv) {
     try {
         const options o = parse(argc, argv);
-        std::printf("# embree_bench: one thread, %zu rays of each kind, fastest of %d pass(es); Embree %s\n", o.rays,
-                    o.repeat, RTC_VERSION_STRING);
+        std::printf("# embree_bench: the reference on one thread, %zu rays of each kind, fastest of %d pass(es); Embree %s, device \"%s\"\n",
+                    o.rays, o.repeat, RTC_VERSION_STRING, o.embree_config.c_str());
         for (const std::string& name : o.scenes) run_scene(name, o);
         return 0;
     } catch (const std::exception& e) {
