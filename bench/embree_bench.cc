@@ -324,9 +324,9 @@ void run_scene(const std::string& name, const options& o) {
     }
     std::printf("scene=%s build reference_s=%.3g embree_s=%.3g ratio=%.3g\n", name.c_str(), ref_build, emb_build,
                 ref_build / emb_build);
-    std::printf("scene=%s reference_bytes_per_primitive=%.3g\n", name.c_str(),
+    std::printf("scene=%s reference_bytes_per_primitive=%.1f\n", name.c_str(),
                 double(heap_after - heap_before - ref.bookkeeping_bytes()) / double(s.size()));
-    std::printf("scene=%s embree_bytes_per_primitive=%.3g\n", name.c_str(), double(emb.bytes()) / double(s.size()));
+    std::printf("scene=%s embree_bytes_per_primitive=%.1f\n", name.c_str(), double(emb.bytes()) / double(s.size()));
     std::fflush(stdout);
 }
 

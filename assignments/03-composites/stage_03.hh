@@ -206,8 +206,9 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 /// area(A)·count(A) + area(B)·count(B); sort or bin the children by box centre along
 /// an axis and take the cheapest split. (The reference puts the centres in 32 bins per
 /// axis and weighs entering a node as its two box tests, then collapses the binary tree
-/// into one of four subtrees per node, whose four boxes it tests at once; a leaf whose
-/// children fit in the lanes left free gives each child a lane of its own. A sweep over
+/// into one of eight subtrees per node, whose boxes it tests four at a time; a leaf keeps
+/// a ball around each child, rtab_component::bounding_ball(), and calls only the children
+/// whose ball the ray meets, each ball test counted as a box test. A sweep over
 /// every split of the sorted children, or a split at the median of the longest axis, also
 /// meets the budgets; the budgets, not the method or the tree's width, are graded.) A node of more than `leaf_size` children is always
 /// split, one of at most `leaf_size` becomes a leaf unless a split is cheaper. Many children with
@@ -217,7 +218,8 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 /// box the ray enters, test both children's boxes (vl::hits_box(), or a faster test of
 /// your own that counts each box with vl::count_bounding_volume_tests(); the best hit so
 /// far is `t_max`), visit the nearer one first, and skip a child whose box starts beyond
-/// the best hit found so far. A leaf intersects each of its children once. Nothing is
+/// the best hit found so far. A leaf intersects each of its children once (after a
+/// bound of its own, if you like, counted as a box test). Nothing is
 /// tested twice; a ray that misses the root box costs that one box test. The nearest hit
 /// and the three rules are those of a plain LIST of the same children.
 ///

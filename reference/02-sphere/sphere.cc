@@ -16,6 +16,7 @@ public:
     bool contains(const point& p) const override { return (p - center_).length() < radius_; }
     point min_point() const override { return center_ - vector(radius_, radius_, radius_); }
     point max_point() const override { return center_ + vector(radius_, radius_, radius_); }
+    ball bounding_ball() const override { return {center_, radius_}; }
 
 private:
     // Robust ray-sphere intersection (Haines, Guenther and Akenine-Moeller, "Precision

@@ -2,15 +2,19 @@
 //
 // Built with the surface area heuristic over 32 bins of the children's centres (I. Wald,
 // "On fast construction of SAH-based bounding volume hierarchies", IEEE Symposium on
-// Interactive Ray Tracing 2007) as a binary tree, then collapsed into a tree of four
+// Interactive Ray Tracing 2007) as a binary tree, then collapsed into a tree of eight
 // subtrees per node (I. Wald, C. Benthin and S. Boulos, "Getting rid of packets", IEEE
-// Symposium on Interactive Ray Tracing 2008; Embree's BVH4 is such a tree): a ray tests
-// the four boxes of a node at once, in one vector of floats, and visits half as many
-// nodes as in the binary tree. Each node is two 64-byte cache lines; a lane holding one
-// child points at the child itself, so reaching it loads nothing in between; its boxes are
-// rounded outwards to float, and the slab test's own rounding is covered, so no hit is
-// lost (A. Williams, S. Barrus, R. K. Morley and P. Shirley, "An efficient and robust
-// ray-box intersection algorithm", JGT 10(1), 2005; M. Pharr, W. Jakob and G. Humphreys,
+// Symposium on Interactive Ray Tracing 2008; Embree builds its BVH8 so): a ray tests the
+// eight boxes of a node together, four at a time in one vector of floats, and visits a
+// third as many nodes as in the binary tree. A leaf is a run of slots in blocks of four:
+// each slot holds a ball around one child, in float, and the child's address, so that a
+// ray tests a leaf's balls together and calls only the children whose ball its line
+// meets (a sphere's ball is the sphere, rtab_component::bounding_ball(); any other
+// child's is the ball around its box). The surface area heuristic counts a leaf's cost
+// by its blocks, as Embree does, so that leaves fill them. Boxes are rounded outwards to
+// float, balls grown, and the float arithmetic's own rounding covered, so no hit is lost
+// (A. Williams, S. Barrus, R. K. Morley and P. Shirley, "An efficient and robust ray-box
+// intersection algorithm", JGT 10(1), 2005; M. Pharr, W. Jakob and G. Humphreys,
 // *Physically Based Rendering*, 4th ed., 6.8.2). The shell (the children, reading,
 // writing, building once at the first ray) is vl::shapes::bvh_base.
 #include <algorithm>
@@ -18,6 +22,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -32,6 +37,10 @@ namespace {
 // What entering an inner node costs, in units of one child's intersect(): its two box
 // tests, each counted as one test, as the budgets count them.
 constexpr double traversal_cost = 2;
+// What testing a block of four balls costs, in the same units: about one child test.
+constexpr double block_cost = 1;
+constexpr int width = 8;        // subtrees per node
+constexpr int block_slots = 4;  // children per block
 constexpr int max_bins = 32;          // SAH bins per axis (Wald 2007 finds 16 to 32 enough)
 constexpr int max_sah_depth = 60;     // deeper than this, split by count (always balanced)
 // The deepest tree: 60 SAH levels, then halving at most 32 times (2^32 children).
@@ -87,7 +96,8 @@ float round_up(double x) {
 
 /// Four floats that the compiler keeps in one SSE register (a GCC and Clang vector
 /// extension): `+`, `-`, `*`, `<` and `?:` act on the four lanes at once, lane c holding
-/// what belongs to a node's subtree c. A comparison gives a mask4, -1 where it holds.
+/// what belongs to a node's subtree c (or to a block's child c). A comparison gives a
+/// mask4, -1 where it holds.
 using float4 = float __attribute__((vector_size(16)));
 using mask4 = std::int32_t __attribute__((vector_size(16)));
 
@@ -105,9 +115,13 @@ constexpr float far_stretch = 1 + 4 * (3 * 0x1p-24f / (1 - 3 * 0x1p-24f));
 /// from the one rounded the other way, so the origin's rounding to float never moves a
 /// face across it. A zero direction component has the reciprocal +-infinity (as does one
 /// below 3e-39 in magnitude, whose reciprocal no float holds), which the slab test
-/// handles. Each value is held in all four lanes, ready for a node's four boxes.
+/// handles. Each value is held in all four lanes, ready for four boxes. For the ball tests
+/// it also keeps the origin and the direction as the nearest floats, and the origin's
+/// largest coordinate, by which their rounding is bounded.
 struct slab_ray {
     float4 origin_near[3], origin_far[3], inverse[3];
+    float4 origin[3], direction[3];
+    float origin_size;
     int near_row[3], far_row[3];
     explicit slab_ray(const ray& r) {
         const point& o = r.origin();
@@ -122,7 +136,10 @@ struct slab_ray {
             // direction is positive, and with it rounded down when it is negative.
             origin_near[k] = float4{} + (negative ? round_down(from[k]) : round_up(from[k]));
             origin_far[k] = float4{} + (negative ? round_up(from[k]) : round_down(from[k]));
+            origin[k] = float4{} + static_cast<float>(from[k]);
+            direction[k] = float4{} + static_cast<float>(dir[k]);
         }
+        origin_size = round_up(std::max({std::fabs(from[0]), std::fabs(from[1]), std::fabs(from[2])}));
     }
 };
 
@@ -136,11 +153,11 @@ public:
 
     point min_point() const override {
         ensure_built();
-        return order_.empty() ? NaN_point : point(root_.lo[0], root_.lo[1], root_.lo[2]);
+        return children_.empty() ? NaN_point : point(root_.lo[0], root_.lo[1], root_.lo[2]);
     }
     point max_point() const override {
         ensure_built();
-        return order_.empty() ? NaN_point : point(root_.hi[0], root_.hi[1], root_.hi[2]);
+        return children_.empty() ? NaN_point : point(root_.hi[0], root_.hi[1], root_.hi[2]);
     }
 
 private:
@@ -153,9 +170,9 @@ private:
 
     /// Where a lane of a node leads, in 8 bytes: another node, one child (a pointer to the
     /// child itself, so that the walk loads nothing between a node and the child it
-    /// calls), or a leaf's run of children in order_, for a leaf too big for the lanes
-    /// left. The two low bits say which (a child's address is a multiple of 8, so they
-    /// are free); a lane without a subtree holds 0.
+    /// calls), or a leaf's run of slots in the blocks. The two low bits say which (a
+    /// child's address is a multiple of 8, so they are free); a lane without a subtree
+    /// holds 0.
     /// (No default value, so that the walk's stack of them is not cleared for each ray.)
     class link {
     public:
@@ -165,9 +182,10 @@ private:
         static link to_child(const rtab_component* c) {
             return from_bits(reinterpret_cast<std::uintptr_t>(c) | child_tag);
         }
-        /// order_[index, index + count), count at most 64 (the largest leaf_size).
-        static link to_run(std::uint32_t index, std::uint32_t count) {
-            return from_bits((std::uint64_t{index} << count_bits | count) << tag_bits | run_tag);
+        /// Slots [first, first + count) of the blocks (slot s is child s % 4 of block
+        /// s / 4), count at most 64 (the largest leaf_size).
+        static link to_slots(std::uint64_t first, std::uint32_t count) {
+            return from_bits((first << count_bits | count) << tag_bits | slots_tag);
         }
 
         bool is_none() const { return bits_ == 0; }
@@ -177,14 +195,14 @@ private:
         const rtab_component* child() const {
             return reinterpret_cast<const rtab_component*>(static_cast<std::uintptr_t>(bits_ & ~tag_mask));
         }
-        std::uint32_t run_index() const { return static_cast<std::uint32_t>(bits_ >> (tag_bits + count_bits)); }
-        std::uint32_t run_count() const {
+        std::uint64_t first_slot() const { return bits_ >> (tag_bits + count_bits); }
+        std::uint32_t slot_count() const {
             return static_cast<std::uint32_t>(bits_ >> tag_bits & ((std::uint64_t{1} << count_bits) - 1));
         }
 
     private:
-        static constexpr int tag_bits = 2, count_bits = 7;  // a run's count: 1 to 64 fits in 7 bits
-        static constexpr std::uint64_t tag_mask = 3, node_tag = 1, child_tag = 2, run_tag = 3;
+        static constexpr int tag_bits = 2, count_bits = 7;  // a leaf's count: 2 to 64 fits in 7 bits
+        static constexpr std::uint64_t tag_mask = 3, node_tag = 1, child_tag = 2, slots_tag = 3;
         static link from_bits(std::uint64_t bits) {
             link l;
             l.bits_ = bits;
@@ -201,17 +219,34 @@ private:
         subtree child[2];
     };
 
-    /// An inner node: the boxes of up to four subtrees, lane by lane, and where they are.
-    /// Leaves are not nodes: a leaf is a run of children that its parent points to. A lane
-    /// without a subtree has the empty box (low corner +infinity, high -infinity), which
-    /// every ray misses, and link::none().
+    /// An inner node: the boxes of up to eight subtrees, four lanes to a float4, and where
+    /// they are. Leaves are not nodes: a leaf is a run of slots (or one child) that its
+    /// parent points to. A lane without a subtree has the empty box (low corner
+    /// +infinity, high -infinity), which every ray misses, and link::none(). Four 64-byte
+    /// cache lines: the boxes, then the links.
     struct alignas(64) node {
-        float4 bounds[2][3];  // [0 low corner, 1 high corner][axis], rounded outwards
-        link child[4];
-        /// How many lanes hold a subtree, so how many boxes a visit tests: 2 to 4.
-        int lanes() const { return 2 + !child[2].is_none() + !child[3].is_none(); }
+        float4 bounds[2][3][width / 4];  // [0 low corner, 1 high corner][axis][lanes 0-3, 4-7], rounded outwards
+        link child[width];
+        /// How many lanes hold a subtree, so how many boxes a visit tests: 2 to 8 (the
+        /// lanes in use come first).
+        int lanes() const {
+            int n = 2;
+            while (n < width && !child[n].is_none()) ++n;
+            return n;
+        }
     };
-    static_assert(sizeof(node) == 128);
+    static_assert(sizeof(node) == 256);
+
+    /// Four slots of leaves: around each child a ball, its centre's x, y and z and its
+    /// radius lane by lane, in float, grown to hold the child's ball (see set_slot()), and
+    /// the child. A slot that holds no child has the radius -infinity and no child. One
+    /// leaf's slots are consecutive; a leaf of up to four sits in one block, which it may
+    /// share with other small leaves.
+    struct alignas(32) block {
+        float4 ball[4];  // centre x, y, z, radius
+        const rtab_component* child[block_slots];
+    };
+    static_assert(sizeof(block) == 96);
 
     struct item {
         box3 bounds;
@@ -221,7 +256,8 @@ private:
 
     void build() const override {
         nodes_.clear();
-        order_.clear();
+        blocks_.clear();
+        ball_size_ = 0;
         root_ = {};
         if (children_.empty()) return;
         std::vector<item> items;
@@ -233,42 +269,39 @@ private:
             items.push_back(it);
         }
         for (const item& it : items) root_.grow(it.bounds);
-        for (int c = 0; c < 4; ++c) set_lane(root_box_, c, c == 0 ? &root_ : nullptr);
+        for (int c = 0; c < width; ++c) set_lane(root_box_, c, c == 0 ? &root_ : nullptr);
         std::vector<binary_node> binary;
         binary.reserve(items.size());
         const subtree binary_root = build_subtree(binary, items, 0, items.size(), 0, root_);
-        nodes_.reserve(binary.size() / 2 + 1);  // a node takes the place of 1 to 3 binary ones
-        root_link_ = to_link(binary, items, binary_root);
+        std::array<std::vector<std::uint32_t>, block_slots> open;  // blocks with free slots, by how many
+        root_link_ = to_link(binary, items, open, binary_root);
         nodes_.shrink_to_fit();
-        order_.reserve(items.size());
-        for (const item& it : items) order_.push_back(it.object);
+        blocks_.shrink_to_fit();
     }
 
     /// Lane c of a node's boxes: `box` rounded outwards, or the empty box (low corner
     /// +infinity, high -infinity), which every ray misses, where `box` is null.
-    static void set_lane(float4 (&bounds)[2][3], int c, const box3* box) {
+    static void set_lane(float4 (&bounds)[2][3][width / 4], int c, const box3* box) {
         for (int k = 0; k < 3; ++k) {
-            bounds[0][k][c] = box ? round_down(box->lo[k]) : INFINITY;
-            bounds[1][k][c] = box ? round_up(box->hi[k]) : -INFINITY;
+            bounds[0][k][c / 4][c % 4] = box ? round_down(box->lo[k]) : INFINITY;
+            bounds[1][k][c / 4][c % 4] = box ? round_up(box->hi[k]) : -INFINITY;
         }
     }
 
-    /// The node that stands for binary[index] and the binary nodes below it, up to four
+    /// The node that stands for binary[index] and the binary nodes below it, up to eight
     /// subtrees: starting from its two, the largest subtree that is an inner node is
-    /// replaced by its two until there are four or only leaves (Wald, Benthin and Boulos
-    /// 2008). Lanes still free then take the children of a leaf, one each, so that their
-    /// boxes are tested with the node's and only the children whose box the ray enters are
-    /// called. Nodes are stored parent first, so a node is usually near its first subtree.
+    /// replaced by its two until there are eight or only leaves (Wald, Benthin and Boulos
+    /// 2008). Nodes are stored parent first, so a node is usually near its first subtree.
     std::uint32_t collapse(const std::vector<binary_node>& binary, const std::vector<item>& items,
-                           std::uint32_t index) const {
+                           std::array<std::vector<std::uint32_t>, block_slots>& open, std::uint32_t index) const {
         struct lane {
             subtree where;
             box3 bounds;
         };
-        std::array<lane, 4> lanes{};
+        std::array<lane, width> lanes{};
         int used = 2;
         for (int side = 0; side < 2; ++side) lanes[side] = {binary[index].child[side], binary[index].bounds[side]};
-        while (used < 4) {
+        while (used < width) {
             int widest = -1;  // the inner lane with the largest surface
             for (int c = 0; c < used; ++c) {
                 if (lanes[c].where.count == 0 && (widest < 0 || lanes[c].bounds.half_area() > lanes[widest].bounds.half_area()))
@@ -279,29 +312,98 @@ private:
             lanes[widest] = {opened.child[0], opened.bounds[0]};
             lanes[used++] = {opened.child[1], opened.bounds[1]};
         }
-        for (int c = 0; c < used; ++c) {  // a leaf whose children fit in the lanes left
-            const subtree leaf = lanes[c].where;
-            if (leaf.count < 2 || used + static_cast<int>(leaf.count) - 1 > 4) continue;
-            for (std::uint32_t k = 0; k < leaf.count; ++k) {
-                lanes[k == 0 ? c : used++] = {subtree{leaf.index + k, 1}, items[leaf.index + k].bounds};
-            }
-        }
         const auto at = static_cast<std::uint32_t>(nodes_.size());
         nodes_.emplace_back();
-        for (int c = 0; c < 4; ++c) set_lane(nodes_[at].bounds, c, c < used ? &lanes[c].bounds : nullptr);
+        for (int c = 0; c < width; ++c) set_lane(nodes_[at].bounds, c, c < used ? &lanes[c].bounds : nullptr);
         for (int c = 0; c < used; ++c) {
-            const link child = to_link(binary, items, lanes[c].where);
+            const link child = to_link(binary, items, open, lanes[c].where);
             nodes_[at].child[c] = child;  // after the call, which may move nodes_
         }
         return at;
     }
 
     /// The link to `where`: an inner node is collapse()d into nodes_; a leaf of one child
-    /// points at the child, a bigger one at its run (items are in order_'s order).
-    link to_link(const std::vector<binary_node>& binary, const std::vector<item>& items, subtree where) const {
-        if (where.count == 0) return link::to_node(collapse(binary, items, where.index));
+    /// points at the child (its lane's box is its only test); a bigger one gets slots.
+    link to_link(const std::vector<binary_node>& binary, const std::vector<item>& items,
+                 std::array<std::vector<std::uint32_t>, block_slots>& open, subtree where) const {
+        if (where.count == 0) return link::to_node(collapse(binary, items, open, where.index));
         if (where.count == 1) return link::to_child(items[where.index].object);
-        return link::to_run(where.index, where.count);
+        const std::uint64_t first = place_leaf(open, where.count);
+        for (std::uint32_t k = 0; k < where.count; ++k) set_slot(first + k, &items[where.index + k]);
+        return link::to_slots(first, where.count);
+    }
+
+    /// The first of `count` consecutive free slots for a leaf. A leaf of up to four takes
+    /// the free slots of the block with the fewest that hold it (the newest such, near
+    /// its neighbours in the tree), or a new block; a bigger one takes new blocks. `open`
+    /// lists the blocks with free slots by how many, so that small leaves fill blocks up.
+    std::uint64_t place_leaf(std::array<std::vector<std::uint32_t>, block_slots>& open, std::uint32_t count) const {
+        for (std::uint32_t free = count; free < block_slots; ++free) {
+            if (open[free].empty()) continue;
+            const std::uint32_t b = open[free].back();
+            open[free].pop_back();
+            if (free > count) open[free - count].push_back(b);
+            return std::uint64_t{b} * block_slots + (block_slots - free);
+        }
+        const auto first_block = static_cast<std::uint32_t>(blocks_.size());
+        const std::uint32_t new_blocks = (count + block_slots - 1) / block_slots;
+        for (std::uint32_t k = 0; k < new_blocks; ++k) {
+            block& b = blocks_.emplace_back();
+            for (int c = 0; c < block_slots; ++c) set_empty(b, c);
+        }
+        const std::uint32_t left = new_blocks * block_slots - count;  // free in the last block
+        if (left > 0) open[left].push_back(first_block + new_blocks - 1);
+        return std::uint64_t{first_block} * block_slots;
+    }
+
+    static void set_empty(block& b, int c) {
+        for (int k = 0; k < 3; ++k) b.ball[k][c] = 0;
+        b.ball[3][c] = -INFINITY;
+        b.child[c] = nullptr;
+    }
+
+    /// Slot s holds `it`: the child, and a ball in float that holds every point where a
+    /// ray can hit it. That is the child's bounding_ball() where it gives one, else the
+    /// ball around its box (its centre, and half its diagonal). The centre is rounded to
+    /// the nearest float; the radius grows by how far that moved it, and is rounded up. A
+    /// ball that float cannot hold (a coordinate beyond 3.4e38) becomes the ball of
+    /// radius +infinity around the origin, which every ray's line meets: that child is
+    /// always called.
+    void set_slot(std::uint64_t s, const item* it) const {
+        block& b = blocks_[s / block_slots];
+        const int c = static_cast<int>(s % block_slots);
+        b.child[c] = it->object;
+        const rtab_component::ball own = it->object->bounding_ball();
+        double centre[3], radius;
+        if (own.radius >= 0 && std::isfinite(own.center.x) && std::isfinite(own.center.y) && std::isfinite(own.center.z)) {
+            centre[0] = own.center.x, centre[1] = own.center.y, centre[2] = own.center.z;
+            radius = own.radius;
+        } else {
+            double squared = 0;
+            for (int k = 0; k < 3; ++k) {
+                centre[k] = (it->bounds.lo[k] + it->bounds.hi[k]) / 2;
+                const double half = std::max(it->bounds.hi[k] - centre[k], centre[k] - it->bounds.lo[k]);
+                squared += half * half;
+            }
+            radius = std::sqrt(squared) * (1 + 0x1p-50);  // covers the rounding of the sum and root
+        }
+        float f[3];
+        double moved = 0;
+        for (int k = 0; k < 3; ++k) {
+            f[k] = static_cast<float>(centre[k]);
+            moved += (f[k] - centre[k]) * (f[k] - centre[k]);
+        }
+        const float r = round_up((radius + std::sqrt(moved)) * (1 + 0x1p-50));
+        if (!(std::isfinite(f[0]) && std::isfinite(f[1]) && std::isfinite(f[2]) && std::isfinite(r))) {
+            for (int k = 0; k < 3; ++k) b.ball[k][c] = 0;
+            b.ball[3][c] = INFINITY;
+            return;
+        }
+        for (int k = 0; k < 3; ++k) {
+            b.ball[k][c] = f[k];
+            ball_size_ = std::max(ball_size_, std::fabs(f[k]));
+        }
+        b.ball[3][c] = r;
     }
 
     /// Builds the subtree of items[begin, end), whose box is `bounds`; returns where it is.
@@ -314,7 +416,7 @@ private:
         for (std::size_t i = begin; i < end; ++i) centres.grow(items[i].centre);
 
         const split best = depth < max_sah_depth ? cheapest_split(items, begin, end, bounds, centres) : split{};
-        if (n <= static_cast<std::size_t>(leaf_size_) && !(best.cost < static_cast<double>(n))) return leaf;
+        if (n <= static_cast<std::size_t>(leaf_size_) && !(best.cost < leaf_cost(n))) return leaf;
         std::size_t middle;
         if (best.axis < 0) {  // every centre alike, or too deep: split by count
             middle = begin + n / 2;
@@ -340,6 +442,12 @@ private:
         return {index, 0};
     }
 
+    /// What a leaf of n children costs a ray that enters its box: a test of each of its
+    /// blocks (Embree's builders count a leaf by its blocks, too).
+    static double leaf_cost(std::size_t n) {
+        return block_cost * static_cast<double>((n + block_slots - 1) / block_slots);
+    }
+
     struct split {
         double cost = INFINITY;
         int axis = -1;  // -1: no split found
@@ -353,11 +461,11 @@ private:
     }
 
     /// The split between two bins of centres that the surface area heuristic finds
-    /// cheapest, over the three axes: traversal_cost + (A_left N_left + A_right N_right) / A.
+    /// cheapest, over the three axes: traversal_cost + (A_left C_left + A_right C_right) / A,
+    /// where C is what a side's children cost as a leaf (leaf_cost()).
     static split cheapest_split(const std::vector<item>& items, std::size_t begin, std::size_t end,
                                 const box3& bounds, const box3& centres) {
         const double area = bounds.half_area();
-        const auto n = static_cast<double>(end - begin);
         const int bins = bins_for(end - begin);
         split best;
         for (int axis = 0; axis < 3; ++axis) {
@@ -371,14 +479,14 @@ private:
                 bin_bounds[static_cast<std::size_t>(b)].grow(items[i].bounds);
                 ++bin_items[static_cast<std::size_t>(b)];
             }
-            // right_cost[b]: A N of bins b and above.
+            // right_cost[b]: A C of bins b and above.
             std::array<double, max_bins> right_cost{};
             box3 right;
             std::size_t right_items = 0;
             for (int b = bins - 1; b > 0; --b) {
                 right.grow(bin_bounds[static_cast<std::size_t>(b)]);
                 right_items += bin_items[static_cast<std::size_t>(b)];
-                right_cost[static_cast<std::size_t>(b)] = right.half_area() * static_cast<double>(right_items);
+                right_cost[static_cast<std::size_t>(b)] = right.half_area() * leaf_cost(right_items);
             }
             box3 left;
             std::size_t left_items = 0;
@@ -386,33 +494,52 @@ private:
                 left.grow(bin_bounds[static_cast<std::size_t>(b - 1)]);
                 left_items += bin_items[static_cast<std::size_t>(b - 1)];
                 if (left_items == 0 || left_items == end - begin) continue;  // one side empty: no split
-                const double weighted = left.half_area() * static_cast<double>(left_items) + right_cost[static_cast<std::size_t>(b)];
-                const double cost = traversal_cost + (area > 0 ? weighted / area : n);
+                const double weighted = left.half_area() * leaf_cost(left_items) + right_cost[static_cast<std::size_t>(b)];
+                const double cost = traversal_cost + (area > 0 ? weighted / area : leaf_cost(end - begin));
                 if (cost < best.cost) best = {cost, axis, b};
             }
         }
         return best;
     }
 
-    /// The slab test of a node's four boxes against `sr` for t in [0, t_max], lane by lane:
-    /// -1 in the lanes of the boxes the ray passes through, and `t_near` is where it
-    /// enters them. Branch-free: the face met first comes from the direction's sign, and
+    /// The slab test of a node's eight boxes against `sr` for t in [0, t_max], four lanes
+    /// at a time: bit c set for each box the ray passes through, and `t_near[c]` where it
+    /// enters it. Branch-free: the face met first comes from the direction's sign, and
     /// the IEEE rules do the rest. A zero direction component gives distances of
     /// +-infinity (inside the slab or never); the NaN of 0 * infinity, for an origin on a
     /// face of such a slab, compares false and so never replaces t0 or t1: that slab
     /// limits nothing. `t_max` is float_limit() of the best hit, so stretched already.
-    static mask4 slabs(const float4 (&bounds)[2][3], const slab_ray& sr, float4 t_max, float4& t_near) {
-        const float4* const rows = &bounds[0][0];  // low x, y, z, high x, y, z
-        float4 t0 = {0, 0, 0, 0}, t1 = {INFINITY, INFINITY, INFINITY, INFINITY};
-        for (int k = 0; k < 3; ++k) {
-            const float4 near = (rows[sr.near_row[k]] - sr.origin_near[k]) * sr.inverse[k];
-            const float4 far = (rows[sr.far_row[k]] - sr.origin_far[k]) * sr.inverse[k];
-            t0 = near > t0 ? near : t0;
-            t1 = far < t1 ? far : t1;
+    static int slabs(const float4 (&bounds)[2][3][width / 4], const slab_ray& sr, float4 t_max, float (&t_near)[width]) {
+        const float4(*const rows)[width / 4] = &bounds[0][0];  // low x, y, z, high x, y, z
+        int enters = 0;
+        for (int q = 0; q < width / 4; ++q) {
+            float4 t0 = {0, 0, 0, 0}, t1 = {INFINITY, INFINITY, INFINITY, INFINITY};
+            for (int k = 0; k < 3; ++k) {
+                const float4 near = (rows[sr.near_row[k]][q] - sr.origin_near[k]) * sr.inverse[k];
+                const float4 far = (rows[sr.far_row[k]][q] - sr.origin_far[k]) * sr.inverse[k];
+                t0 = near > t0 ? near : t0;
+                t1 = far < t1 ? far : t1;
+            }
+            t1 *= far_stretch;
+            std::memcpy(&t_near[4 * q], &t0, sizeof t0);
+            enters |= lane_bits((t0 <= t1) & (t0 <= t_max)) << 4 * q;
         }
-        t1 *= far_stretch;
-        t_near = t0;
-        return (t0 <= t1) & (t0 <= t_max);
+        return enters;
+    }
+
+    /// The children of block `b` whose ball the ray's line meets no farther than t_max,
+    /// as bits: the distance from each centre to the line, squared, against the radius
+    /// grown by `slack`, and the distance along the ray to the point nearest the centre,
+    /// less that radius, against t_max (a hit lies no nearer). In float, from the
+    /// nearest floats to the origin and the direction; `slack` covers what that and the
+    /// arithmetic may be off by (see find_intersection()). A NaN (a ray without a
+    /// direction) compares false: no child is called, as none could be hit.
+    static int balls(const block& b, const slab_ray& sr, float4 slack, float4 t_max) {
+        const float4 fx = b.ball[0] - sr.origin[0], fy = b.ball[1] - sr.origin[1], fz = b.ball[2] - sr.origin[2];
+        const float4 along = fx * sr.direction[0] + fy * sr.direction[1] + fz * sr.direction[2];
+        const float4 lx = fx - along * sr.direction[0], ly = fy - along * sr.direction[1], lz = fz - along * sr.direction[2];
+        const float4 reach = b.ball[3] * far_stretch + slack;  // -infinity for an empty slot
+        return lane_bits((lx * lx + ly * ly + lz * lz <= reach * reach) & (along - reach <= t_max) & (reach >= 0));
     }
 
     /// Starts loading the first 64 bytes of `child` (two cache lines where they straddle
@@ -422,6 +549,12 @@ private:
         const char* const bytes = reinterpret_cast<const char*>(child);
         __builtin_prefetch(bytes);
         __builtin_prefetch(bytes + 63);
+    }
+    /// The same for the block of slot s (96 bytes, in two lines).
+    void prefetch_slots(std::uint64_t s) const {
+        const char* const bytes = reinterpret_cast<const char*>(&blocks_[s / block_slots]);
+        __builtin_prefetch(bytes);
+        __builtin_prefetch(bytes + sizeof(block) - 1);
     }
 
     /// Bit c set where lane c of `enters` is true (-1): on x86 one instruction, movmskps,
@@ -436,48 +569,66 @@ private:
 
     intersection find_intersection(const ray& r) const override {
         ensure_built();
-        if (order_.empty()) return intersection::none();
+        if (children_.empty()) return intersection::none();
         const slab_ray sr(r);
-        float4 root_near;
-        const mask4 enters_root = slabs(root_box_, sr, float4{} + INFINITY, root_near);
+        float root_near[width];
+        const int enters_root = slabs(root_box_, sr, float4{} + INFINITY, root_near);
         count_bounding_volume_tests(1);
-        if (!enters_root[0]) return intersection::none();
+        if (!(enters_root & 1)) return intersection::none();
+        // What a ball test's float arithmetic may be off by, as a distance: rounding the
+        // origin and the direction to float, and each step after, is off by at most a few
+        // float steps (2^-24) of the largest coordinate involved, the origin's or a
+        // centre's; 64 of them leave a wide margin, and the smallest normal float one
+        // where every coordinate is 0.
+        const float4 slack = float4{} + (64 * 0x1p-24f * (sr.origin_size + ball_size_) + 0x1p-126f);
         struct entry {
             link to;
             float t_near;
         };
-        // Near-first leaves at most three entries per level waiting.
-        std::array<entry, 3 * max_tree_depth> stack;
+        // Near-first leaves at most seven entries per level waiting.
+        std::array<entry, (width - 1) * max_tree_depth> stack;
         std::size_t top = 0;
-        std::uint64_t box_tests = 0;
+        std::uint64_t tests = 0;  // box and ball tests
         intersection best = intersection::none();
         float4 t_max = float4{} + INFINITY;  // float_limit(best.t) once there is a best hit
         link at = root_link_;                // the subtree walked now
         while (true) {
-            if (!at.is_node()) {  // a leaf: one child, or a run of them in order_
-                const std::uint32_t count = at.is_child() ? 1 : at.run_count();
-                for (std::uint32_t k = 0; k < count; ++k) {
-                    const rtab_component* const child = at.is_child() ? at.child() : order_[at.run_index() + k];
-                    const intersection i = child->intersect(r);
-                    if (i.nearer_than(best)) best = i;
-                }
+            if (at.is_child()) {  // a leaf of one child
+                const intersection i = at.child()->intersect(r);
+                if (i.nearer_than(best)) best = i;
                 if (best.hit()) t_max = float4{} + float_limit(best.t);
+            } else if (!at.is_node()) {  // a leaf's slots: test their balls, block by block
+                const std::uint64_t end = at.first_slot() + at.slot_count();
+                for (std::uint64_t s = at.first_slot(); s < end; s = (s / block_slots + 1) * block_slots) {
+                    const block& b = blocks_[s / block_slots];
+                    const auto from = static_cast<unsigned>(s % block_slots);
+                    const auto to = static_cast<unsigned>(std::min<std::uint64_t>(block_slots, from + (end - s)));
+                    const int mine = static_cast<int>((1u << to) - (1u << from));  // this leaf's slots
+                    tests += static_cast<std::uint64_t>(std::popcount(static_cast<unsigned>(mine)));
+                    for (int meets = balls(b, sr, slack, t_max) & mine; meets != 0; meets &= meets - 1) {
+                        const intersection i = b.child[std::countr_zero(static_cast<unsigned>(meets))]->intersect(r);
+                        if (i.nearer_than(best)) best = i;
+                    }
+                    if (best.hit()) t_max = float4{} + float_limit(best.t);
+                }
             } else {
                 const node& nd = nodes_[at.node_index()];
-                float4 t_near;
-                const int enters = lane_bits(slabs(nd.bounds, sr, t_max, t_near));
-                box_tests += static_cast<std::uint64_t>(nd.lanes());
+                float t_near[width];
+                const int enters = slabs(nd.bounds, sr, t_max, t_near);
+                tests += static_cast<std::uint64_t>(nd.lanes());
                 if (enters != 0) {
                     // Walk the nearest entered subtree next. The others wait on the stack,
-                    // farthest at the bottom (an insertion sort of at most three), so that
-                    // the nearest of them comes off first. A child entered is fetched from
-                    // memory now, while the others are sorted and walked.
+                    // farthest at the bottom (an insertion sort of at most seven), so that
+                    // the nearest of them comes off first. A child or a leaf's block
+                    // entered is fetched from memory now, while the others are sorted and
+                    // walked.
                     const std::size_t first = top;
                     entry nearest{link::none(), INFINITY};  // none yet: the first lane entered replaces it
-                    for (int c = 0; c < 4; ++c) {
-                        if (!(enters >> c & 1)) continue;
+                    for (int bits = enters; bits != 0; bits &= bits - 1) {
+                        const int c = std::countr_zero(static_cast<unsigned>(bits));
                         entry other{nd.child[c], t_near[c]};
                         if (other.to.is_child()) prefetch(other.to.child());
+                        else if (!other.to.is_node()) prefetch_slots(other.to.first_slot());
                         if (other.t_near <= nearest.t_near) std::swap(other, nearest);
                         if (other.to.is_none()) continue;  // that was the first lane entered
                         std::size_t slot = top++;
@@ -494,15 +645,16 @@ private:
             if (top == 0) break;
             at = stack[--top].to;
         }
-        count_bounding_volume_tests(box_tests);
+        count_bounding_volume_tests(tests);
         return best.hit() ? best : intersection::composite_only(this);
     }
 
-    mutable box3 root_;                                 // the children's box, exactly
-    mutable float4 root_box_[2][3];  // root_ rounded outwards in lane 0, as a node's boxes; lanes 1 to 3 empty
-    mutable link root_link_ = link::none();            // the root: nodes_[0], or one leaf
-    mutable std::vector<node> nodes_;                  // the inner nodes, parent first (built by ensure_built)
-    mutable std::vector<const rtab_component*> order_;  // the children as the leaves hold them
+    mutable box3 root_;                                   // the children's box, exactly
+    mutable float4 root_box_[2][3][width / 4];            // root_ rounded outwards in lane 0, as a node's boxes
+    mutable link root_link_ = link::none();              // the root: nodes_[0], or one leaf
+    mutable std::vector<node> nodes_;                    // the inner nodes, parent first (built by ensure_built)
+    mutable std::vector<block> blocks_;                  // the leaves' slots, four to a block
+    mutable float ball_size_ = 0;                        // the largest |coordinate| of a ball's centre
 };
 
 }  // namespace

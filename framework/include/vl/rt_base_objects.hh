@@ -69,6 +69,17 @@ public:
     /// True when `p` lies inside the object. Objects without an interior: false.
     virtual bool contains(const point& p) const;
 
+    /// \brief A ball that holds every point where a ray can hit the object.
+    struct ball {
+        point center = NaN_point;  ///< its centre
+        double radius = NaN;       ///< NaN: the object gives none
+    };
+    /// A ball around the object, for an object that a ball fits more tightly than its box
+    /// (a sphere: itself). A composite may test a ray against it before calling
+    /// intersect(), as part of that child's bounding-volume test: a ray whose line misses
+    /// the ball cannot hit the object. Default: none (radius NaN), so only the box is used.
+    virtual ball bounding_ball() const { return {}; }
+
     /// Distances `t` at or below zero_t() are not hits: the ray starts there. Compare
     /// `t > zero_t()`, never `t > 0`, so a ray leaving a surface does not hit that surface
     /// again through round-off ("acne"). A negative zero_t() marks an object meant to be
