@@ -243,8 +243,8 @@ private:
     /// leaf's slots are consecutive; a leaf of up to four sits in one block, which it may
     /// share with other small leaves.
     struct alignas(32) block {
-        float4 ball[4];  // centre x, y, z, radius
-        const rtab_component* child[block_slots];
+        float4 ball[4] = {{}, {}, {}, {-INFINITY, -INFINITY, -INFINITY, -INFINITY}};  // centre x, y, z, radius
+        const rtab_component* child[block_slots] = {};
     };
     static_assert(sizeof(block) == 96);
 
@@ -347,19 +347,10 @@ private:
         }
         const auto first_block = static_cast<std::uint32_t>(blocks_.size());
         const std::uint32_t new_blocks = (count + block_slots - 1) / block_slots;
-        for (std::uint32_t k = 0; k < new_blocks; ++k) {
-            block& b = blocks_.emplace_back();
-            for (int c = 0; c < block_slots; ++c) set_empty(b, c);
-        }
+        blocks_.resize(blocks_.size() + new_blocks);  // every slot empty
         const std::uint32_t left = new_blocks * block_slots - count;  // free in the last block
         if (left > 0) open[left].push_back(first_block + new_blocks - 1);
         return std::uint64_t{first_block} * block_slots;
-    }
-
-    static void set_empty(block& b, int c) {
-        for (int k = 0; k < 3; ++k) b.ball[k][c] = 0;
-        b.ball[3][c] = -INFINITY;
-        b.child[c] = nullptr;
     }
 
     /// Slot s holds `it`: the child, and a ball in float that holds every point where a
@@ -545,16 +536,11 @@ private:
     /// Starts loading the first 64 bytes of `child` (two cache lines where they straddle
     /// one's end), where a child keeps its vtable pointer and usually its shape, so that
     /// they are on their way while the walk goes on.
-    static void prefetch(const rtab_component* child) {
-        const char* const bytes = reinterpret_cast<const char*>(child);
+    /// The same serves a leaf's first block (96 bytes, at most two lines).
+    static void prefetch(const void* at, std::size_t size = 64) {
+        const char* const bytes = static_cast<const char*>(at);
         __builtin_prefetch(bytes);
-        __builtin_prefetch(bytes + 63);
-    }
-    /// The same for the block of slot s (96 bytes, in two lines).
-    void prefetch_slots(std::uint64_t s) const {
-        const char* const bytes = reinterpret_cast<const char*>(&blocks_[s / block_slots]);
-        __builtin_prefetch(bytes);
-        __builtin_prefetch(bytes + sizeof(block) - 1);
+        __builtin_prefetch(bytes + size - 1);
     }
 
     /// Bit c set where lane c of `enters` is true (-1): on x86 one instruction, movmskps,
@@ -628,7 +614,7 @@ private:
                         const int c = std::countr_zero(static_cast<unsigned>(bits));
                         entry other{nd.child[c], t_near[c]};
                         if (other.to.is_child()) prefetch(other.to.child());
-                        else if (!other.to.is_node()) prefetch_slots(other.to.first_slot());
+                        else if (!other.to.is_node()) prefetch(&blocks_[other.to.first_slot() / block_slots], sizeof(block));
                         if (other.t_near <= nearest.t_near) std::swap(other, nearest);
                         if (other.to.is_none()) continue;  // that was the first lane entered
                         std::size_t slot = top++;
