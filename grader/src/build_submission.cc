@@ -296,8 +296,15 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
 
     // The prebuilt parts, under neutral names.
     std::vector<prebuilt_part> hidden, renderer, group;
-    for (std::size_t k = 0; k < stage.hidden_objects.size(); ++k)
-        hidden.push_back({stage.hidden_objects[k], "/vl/prebuilt/tests" + std::to_string(k) + ".o"});
+    // With a judge, the submission's test-side program is the subject: its main and the
+    // stage's calls, and no test. Without one, the hidden tests themselves.
+    const bool judged = !stage.judge.empty();
+    if (judged)
+        for (std::size_t k = 0; k < stage.subject_objects.size(); ++k)
+            hidden.push_back({stage.subject_objects[k], "/vl/prebuilt/subject" + std::to_string(k) + ".o"});
+    else
+        for (std::size_t k = 0; k < stage.hidden_objects.size(); ++k)
+            hidden.push_back({stage.hidden_objects[k], "/vl/prebuilt/tests" + std::to_string(k) + ".o"});
     for (std::size_t k = 0; k < in.renderer_objects.size(); ++k)
         renderer.push_back({in.renderer_objects[k], "/vl/prebuilt/rt" + std::to_string(k) + ".o"});
     for (const auto& [name, s] : in.stages)
@@ -403,7 +410,8 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
             b.errors += r.timed_out ? "linking " + r.describe(rq.limits.wall_seconds) + "\n" : explain_link_errors(r.output, sub.files);
         return r.succeeded() && is_regular(bin / program);
     };
-    const bool tests_ok = hidden.empty() || link("hidden_tests", hidden, true);
+    const std::string tests_name = judged ? "subject" : "hidden_tests";
+    const bool tests_ok = hidden.empty() || link(tests_name, hidden, !judged);
     const bool render_ok = tests_ok && link("render", renderer, false);
     b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!tests_ok || !render_ok) {
@@ -411,7 +419,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         return b;
     }
     b.ok = true;
-    if (!hidden.empty()) b.tests_program = bin / "hidden_tests";
+    if (!hidden.empty()) b.tests = {judged ? stage.judge : fs::path(), bin / tests_name};
     b.render_program = bin / "render";
     return b;
 }

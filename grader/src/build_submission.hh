@@ -12,6 +12,7 @@
 
 #include "install.hh"
 #include "sandbox.hh"
+#include "catch_runner.hh"
 #include "submission.hh"
 
 namespace vl::grader {
@@ -22,7 +23,7 @@ struct build_outcome {
     bool refused = false;                 ///< built, but the policy refused it
     std::string errors;                   ///< the first compiler errors, or the refusals
     double seconds = 0;
-    std::filesystem::path tests_program;  ///< hidden tests with the submitted stage (may be absent)
+    test_programs tests;                  ///< what runs the graded tests (may be empty)
     std::filesystem::path render_program; ///< rt with the submitted stage
 };
 

@@ -1,13 +1,20 @@
 #include "catch_runner.hh"
 
-#include <algorithm>
-#include <pugixml.hpp>
+#include <sys/socket.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <pugixml.hpp>
+#include <thread>
+
+#include "../remote/channel.hh"
 #include "install.hh"
 
 namespace vl::grader {
 
 namespace fs = std::filesystem;
+static_assert(remote_channel_fd == remote::channel_fd, "the grader hands over the connection where both ends look");
 
 namespace {
 
@@ -159,20 +166,13 @@ std::set<std::string> tests_passing_on_stubs(const fs::path& program, const fs::
     return passing;
 }
 
-test_outcome run_test_case(const fs::path& program, const test_case_info& expected, const run_limits& limits,
-                           const sandbox_capabilities& caps) {
-    const std::string& name = expected.name;
-    run_request rq;
-    rq.mounts = {{program, "/vl/bin/hidden_tests", false}};
-    rq.argv = {"/vl/bin/hidden_tests", exact_test_spec(name), "-r", "xml", "-o", "/dev/fd/3"};
-    rq.environment = child_environment("/scratch");
-    rq.limits = limits;
-    rq.report_fd = true;
-    const run_result r = run(rq, caps);
+namespace {
 
+/// How the test `expected` went, from the run of the program that ran it and wrote its report.
+test_outcome outcome_of(const run_result& r, const test_case_info& expected, const run_limits& limits) {
+    const std::string& name = expected.name;
     test_outcome o;
     o.seconds = r.seconds;
-    if (!r.started) throw grader_error("the sandbox could not run the hidden tests: " + r.error);
     if (r.timed_out) {
         o.result = item_result::timed_out;
         o.message = "the test " + r.describe(limits.wall_seconds);
@@ -224,6 +224,76 @@ test_outcome run_test_case(const fs::path& program, const test_case_info& expect
         o.message = message.empty() ? "the test program ended with " + r.describe(limits.wall_seconds) : message;
     }
     return o;
+}
+
+/// A Catch2 program's run of the one test case `name`, reporting to fd 3.
+run_request test_request(const fs::path& program, const std::string& inside, const std::string& name,
+                         const run_limits& limits) {
+    run_request rq;
+    rq.mounts = {{program, inside, false}};
+    rq.argv = {inside, exact_test_spec(name), "-r", "xml", "-o", "/dev/fd/3"};
+    rq.environment = child_environment("/scratch");
+    rq.limits = limits;
+    rq.report_fd = true;
+    return rq;
+}
+
+}  // namespace
+
+test_outcome run_test_case(const fs::path& program, const test_case_info& expected, const run_limits& limits,
+                           const sandbox_capabilities& caps) {
+    const run_result r = run(test_request(program, "/vl/bin/hidden_tests", expected.name, limits), caps);
+    if (!r.started) throw grader_error("the sandbox could not run the hidden tests: " + r.error);
+    return outcome_of(r, expected, limits);
+}
+
+test_outcome run_judged_test_case(const fs::path& judge, const fs::path& subject, const test_case_info& expected,
+                                  const run_limits& limits, const sandbox_capabilities& caps) {
+    int ends[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
+        throw grader_error(std::string("socketpair: ") + std::strerror(errno));
+    // The subject: the student's code and nothing else, serving the judge's calls.
+    run_request sq;
+    sq.mounts = {{subject, "/vl/bin/subject", false}};
+    sq.argv = {"/vl/bin/subject"};
+    sq.environment = child_environment("/scratch");
+    sq.limits = limits;
+    sq.channel = ends[1];
+    // The judge: the test, its expected values and its verdict, in a sandbox of its own.
+    run_request jq = test_request(judge, "/vl/bin/judge", expected.name, limits);
+    jq.environment.push_back("VL_SUBJECT_FD=" + std::to_string(remote_channel_fd));
+    jq.channel = ends[0];
+    run_result s;
+    std::thread subject_thread([&] { s = run(sq, caps); });
+    const run_result j = run(jq, caps);
+    subject_thread.join();
+    if (!j.started) throw grader_error("the sandbox could not run the judge: " + j.error);
+    if (!s.started) throw grader_error("the sandbox could not run the submission's code: " + s.error);
+
+    test_outcome o = outcome_of(j, expected, limits);
+    o.seconds = std::max(j.seconds, s.seconds);
+    if (o.result == item_result::timed_out || s.timed_out) {
+        o.result = item_result::timed_out;
+        o.message = "the test " + (j.timed_out ? j : s).describe(limits.wall_seconds);
+        o.warnings.clear();
+        return o;
+    }
+    // The verdict is the judge's; the subject's end can only take a pass away. Its process
+    // must end cleanly once the judge is done, as a test program had to.
+    if (!s.succeeded()) {
+        const std::string how = "your code's process was " + s.describe(limits.wall_seconds);
+        if (o.result == item_result::passed || s.signal != 0) o.result = item_result::crashed;
+        o.message += (o.message.empty() || o.message.ends_with("\n") ? "" : "\n") + how;
+        o.warnings.clear();
+    }
+    return o;
+}
+
+test_outcome run_graded_test(const test_programs& programs, const test_case_info& test, const run_limits& limits,
+                             const sandbox_capabilities& caps) {
+    if (programs.empty()) return test_outcome{item_result::failed, "no test program", 0, {}};
+    return programs.judge.empty() ? run_test_case(programs.subject, test, limits, caps)
+                                  : run_judged_test_case(programs.judge, programs.subject, test, limits, caps);
 }
 
 }  // namespace vl::grader

@@ -47,6 +47,29 @@ std::set<std::string> tests_passing_on_stubs(const std::filesystem::path& progra
 test_outcome run_test_case(const std::filesystem::path& program, const test_case_info& test, const run_limits& limits,
                            const sandbox_capabilities& caps);
 
+/// The descriptor on which the judge and the subject find their connection
+/// (vl::remote::channel_fd in grader/remote/channel.hh).
+inline constexpr int remote_channel_fd = 5;
+
+/// Runs the test case `test` as a judge and a subject (grader/README.md, "Who holds
+/// what"): `judge` holds the test and decides; `subject` holds the submission's code and
+/// answers the judge's calls over a socket. Each runs in a sandbox of its own. The
+/// verdict is the judge's; a subject that crashes, ends, hangs or answers out of turn
+/// fails the test (or, having crashed, makes it crashed), never the grader.
+test_outcome run_judged_test_case(const std::filesystem::path& judge, const std::filesystem::path& subject,
+                                  const test_case_info& test, const run_limits& limits, const sandbox_capabilities& caps);
+
+/// \brief The programs that run a submission's graded tests.
+struct test_programs {
+    std::filesystem::path judge;    ///< the stage's judge (the main build's); empty: the tests are not split
+    std::filesystem::path subject;  ///< the submission's subject; with no judge, the one program of tests and code
+    bool empty() const { return subject.empty(); }
+};
+
+/// Runs `test` with `programs`: judged, or (a stage whose tests are not split yet) in one program.
+test_outcome run_graded_test(const test_programs& programs, const test_case_info& test, const run_limits& limits,
+                             const sandbox_capabilities& caps);
+
 /// True when `file` (a test's source, as Catch2 reports it) is one of a stage's public
 /// tests, which the student has in their tests/ folder.
 bool is_public_test_file(const std::string& file);

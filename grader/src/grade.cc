@@ -232,9 +232,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                 if (i.what == graded_item::kind::test) {
                     run_limits limits = r.test_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
-                    const test_outcome o = b.tests_program.empty()
-                                               ? test_outcome{item_result::failed, "no test program", 0, {}}
-                                               : run_test_case(b.tests_program, i.test, limits, caps);
+                    const test_outcome o = run_graded_test(b.tests, i.test, limits, caps);
                     i.result = o.result;
                     i.message = o.message;
                     if (i.kit_passes && i.message.empty())
@@ -246,9 +244,7 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                         r.sweeps, [&](const rubric_sweep& x) { return x.test == i.test.name; }, "sweep " + i.test.name);
                     run_limits limits = r.test_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
-                    const test_outcome o = b.tests_program.empty()
-                                               ? test_outcome{item_result::failed, "no test program", 0, {}}
-                                               : run_test_case(b.tests_program, i.test, limits, caps);
+                    const test_outcome o = run_graded_test(b.tests, i.test, limits, caps);
                     i.seconds = o.seconds;
                     i.result = o.result;
                     i.message = o.message;
@@ -284,10 +280,10 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                 gc.reference = reference[c.test].chart;
                 run_limits limits = r.test_limits;
                 limits.wall_seconds = std::min(limits.wall_seconds, left());
-                if (limits.wall_seconds < 1 || b.tests_program.empty()) {
+                if (limits.wall_seconds < 1 || b.tests.empty()) {
                     gc.message = "not measured: the time budget of this grade was spent";
                 } else {
-                    const test_outcome o = run_test_case(b.tests_program, named_test(tests, c.test), limits, caps);
+                    const test_outcome o = run_graded_test(b.tests, named_test(tests, c.test), limits, caps);
                     const measured_points m = read_points(o.warnings);
                     if (o.result != item_result::passed)
                         gc.message = std::string("your code's curve is missing: the measurement ") + to_string(o.result) +

@@ -67,6 +67,8 @@ installation load_installation() {
             info.reference_library = str(s, "reference_library");
             info.oracle_library = str(s, "oracle_library");
             info.hidden_objects = paths(s, "hidden_objects");
+            info.judge = str(s, "judge");
+            info.subject_objects = paths(s, "subject_objects");
             in.stages[info.name] = info;
         }
     }

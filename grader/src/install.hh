@@ -26,6 +26,11 @@ struct stage_info {
     std::filesystem::path reference_library;          ///< the stage's reference, a static library
     std::filesystem::path oracle_library;             ///< the same, in namespace vl::reference_stageNN
     std::vector<std::filesystem::path> hidden_objects;  ///< the hidden tests, compiled
+    /// The stage's judge: the graded tests, whose calls into the stage cross to a subject
+    /// (empty: the stage's tests still run in one program with the submission's code).
+    std::filesystem::path judge;
+    /// The subject's own parts (its main, the stage's calls), linked with a submission.
+    std::vector<std::filesystem::path> subject_objects;
 };
 
 /// \brief The grader's installation: the source tree, the main build and its parts.

@@ -207,11 +207,17 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         for (int fd : {out_pipe[0], out_pipe[1], report_pipe[0], report_pipe[1], status_pipe[0], status_pipe[1]})
             if (fd >= 0) close(fd);
     };
+    const int channel = rq.channel >= 0 ? fcntl(rq.channel, F_DUPFD_CLOEXEC, 64) : -1;
+    if (rq.channel >= 0) close(rq.channel);
+    auto close_channel = [&] {
+        if (channel >= 0) close(channel);
+    };
     if (pipe2(out_pipe, O_CLOEXEC) != 0 || (rq.report_fd && pipe2(report_pipe, O_CLOEXEC) != 0) ||
         (bwrap && pipe2(status_pipe, O_CLOEXEC) != 0)) {
         result.error = std::string("pipe: ") + std::strerror(errno);
         close_pipes();
         close_all();
+        close_channel();
         return result;
     }
     for (int* fd : {&out_pipe[0], &out_pipe[1], &report_pipe[0], &report_pipe[1], &status_pipe[0], &status_pipe[1]})
@@ -226,6 +232,7 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         result.error = std::string("fork: ") + std::strerror(errno);
         close_pipes();
         close_all();
+        close_channel();
         return result;
     }
     if (child == 0) {
@@ -238,6 +245,12 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         dup2(out_pipe[1], 2);
         if (report_pipe[1] >= 0) dup2(report_pipe[1], report_fd_number);
         if (status_pipe[1] >= 0) dup2(status_pipe[1], status_fd_number);
+        if (channel >= 0) dup2(channel, channel_fd_number);
+        // The numbers below the mounts that this run does not use are closed: nothing the
+        // grader happens to hold there reaches the program.
+        if (report_pipe[1] < 0) close(report_fd_number);
+        if (status_pipe[1] < 0) close(status_fd_number);
+        if (channel < 0) close(channel_fd_number);
         // bubblewrap closes the descriptors it binds; as root they are attached by open_tree
         // below and never reach it (close-on-exec), so no host folder stays open inside.
         if (!drop)
@@ -282,7 +295,9 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
             _exit(125);
         }
         // Nothing else the grader inherited or opened reaches the program.
-        const int keep = bwrap ? first_mount_fd + (drop ? 0 : static_cast<int>(cmd.mount_fds.size())) : report_fd_number + 1;
+        const int keep = bwrap     ? first_mount_fd + (drop ? 0 : static_cast<int>(cmd.mount_fds.size()))
+                         : channel >= 0 ? channel_fd_number + 1
+                                        : report_fd_number + 1;
         close_range(static_cast<unsigned>(keep), ~0U, 0);
         execve(argv[0], argv.data(), env.data());
         child_says("sandbox: cannot run the program: ", std::strerror(errno));
@@ -293,6 +308,7 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
     if (report_pipe[1] >= 0) close(report_pipe[1]), report_pipe[1] = -1;
     if (status_pipe[1] >= 0) close(status_pipe[1]), status_pipe[1] = -1;
     close_all();
+    close_channel();
     setpgid(child, child);
 
     // Read the pipes until every one is closed or the time is up.

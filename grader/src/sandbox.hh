@@ -80,6 +80,10 @@ struct run_request {
     std::vector<std::string> environment;  ///< the whole environment of the child
     run_limits limits;
     bool report_fd = false;                ///< fd 3 is a pipe into run_result::report
+    /// A connected socket (close-on-exec) that the program gets as descriptor 5: the judge's
+    /// and the subject's connection (grader/remote/channel.hh). run() closes it once the
+    /// program has started, so that the other end sees the connection end with the program.
+    int channel = -1;
     /// false: a trusted program of the grader's own build; argv and cwd are host paths and
     /// only the timeout and the pipes apply.
     bool sandboxed = true;

@@ -14,7 +14,8 @@ namespace vl::grader::sandbox_parts {
 
 constexpr int report_fd_number = 3;
 constexpr int status_fd_number = 4;  // bubblewrap's --json-status-fd
-constexpr int first_mount_fd = 5;
+constexpr int channel_fd_number = 5;  // run_request::channel (vl::remote::channel_fd)
+constexpr int first_mount_fd = 6;
 // As root, the mounts are first bound here, in a private mount namespace of the child, so
 // that bubblewrap, started as nobody, can reach them whatever folders (a 0700 mktemp -d)
 // lie above them on the host. The host sees only this empty folder.

@@ -1,0 +1,75 @@
+#include "judge_connection.hh"
+
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <string>
+
+#include "connections.hh"
+
+namespace vl::remote {
+
+namespace {
+
+/// Starts `program` with one end of a new control connection as its `channel_fd`;
+/// returns the other end.
+int start_subject(const char* program) {
+    int ends[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
+        throw protocol_error(std::string("socketpair: ") + std::strerror(errno));
+    const pid_t pid = fork();
+    if (pid < 0) throw protocol_error(std::string("fork: ") + std::strerror(errno));
+    if (pid == 0) {
+        dup2(ends[1], channel_fd);  // dup2 clears close-on-exec
+        char* const argv[] = {const_cast<char*>(program), nullptr};
+        execv(program, argv);
+        _exit(127);
+    }
+    close(ends[1]);
+    return ends[0];
+}
+
+/// The control connection: where each thread's own connection is handed to the subject.
+int control_fd() {
+    static const int fd = [] {
+        if (const char* given = std::getenv("VL_SUBJECT_FD"); given != nullptr && *given != '\0') return std::atoi(given);
+        if (const char* program = std::getenv("VL_SUBJECT_PROGRAM"); program != nullptr && *program != '\0')
+            return start_subject(program);
+        throw protocol_error("the judge has no subject: set VL_SUBJECT_PROGRAM to a subject program "
+                             "(the grader hands one over as VL_SUBJECT_FD)");
+    }();
+    return fd;
+}
+
+}  // namespace
+
+endpoint& subject() {
+    // One connection per thread of the judge, served by a thread of its own in the
+    // subject: calls a test makes from several threads run there at once, as they would
+    // in one process. Never destroyed: a stand-in held in static storage may release its
+    // object after main, and the subject's thread ends when the judge does.
+    thread_local endpoint* mine = nullptr;
+    if (mine == nullptr) {
+        static std::mutex handing_over;
+        int ends[2];
+        if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
+            throw protocol_error(std::string("socketpair: ") + std::strerror(errno));
+        {
+            const std::lock_guard<std::mutex> lock(handing_over);
+            const bool sent = send_descriptor(control_fd(), ends[1]);
+            close(ends[1]);
+            if (!sent) {
+                close(ends[0]);
+                throw protocol_error("your code's process is not there to take a connection (it ended, or crashed)");
+            }
+        }
+        mine = new endpoint(ends[0], std::vector<handler>{}, "your code's process");
+    }
+    return *mine;
+}
+
+}  // namespace vl::remote

@@ -1,0 +1,35 @@
+// The subject's main(): take each connection the judge hands over on the control
+// connection (one per thread of the judge that calls) and serve it on a thread of its
+// own, until the judge closes the control connection and every connection has ended.
+// Exit 0 then; 3 when the judge's messages made no sense.
+#include <unistd.h>
+
+#include <atomic>
+#include <iostream>
+#include <thread>
+#include <vector>
+
+#include "connections.hh"
+#include "subject.hh"
+
+int main() {
+    using namespace vl::remote;
+    const std::vector<handler> handlers = subject_handlers();
+    std::atomic<bool> broken = false;
+    std::vector<std::thread> served;
+    for (int fd; (fd = receive_descriptor(channel_fd)) >= 0;) {
+        served.emplace_back([fd, &handlers, &broken] {
+            endpoint judge(fd, handlers, "the judge");
+            judge.on_release = release_object;
+            try {
+                judge.serve();
+            } catch (const protocol_error& e) {
+                std::cerr << "subject: " << e.what() << "\n";
+                broken = true;
+            }
+            close(fd);
+        });
+    }
+    for (std::thread& t : served) t.join();
+    return broken ? 3 : 0;
+}
