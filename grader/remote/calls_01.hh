@@ -22,7 +22,6 @@ enum op : op_id {
     make_sampler,       ///< string -> handle of a sampler (0: nullptr)
     primary_ray,        ///< camera handle, double x, double y -> ray
     offsets,            ///< sampler handle, the span's values (vector of sample_offset), seed -> the span's values
-    count,
 };
 
 /// The most offsets one call to a sampler crosses with (the tests ask for at most a few

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "calls_01.hh"
+#include "calls_components.hh"
 #include "stage_01.hh"
 #include "subject.hh"
 
@@ -34,7 +35,7 @@ handler plain(F f) {
 }  // namespace
 
 std::vector<handler> subject_handlers() {
-    std::vector<handler> h(c::count);
+    std::vector<handler> h(calls_components::table_size);
     h[c::translate_matrix] = plain<vector>(translate_matrix);
     h[c::scale_matrix] = plain<double, double, double>(scale_matrix);
     h[c::rotate_x_matrix] = plain<double>(rotate_x_matrix);
