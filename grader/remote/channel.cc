@@ -1,7 +1,11 @@
 #include "channel.hh"
 
+#include <linux/futex.h>
+#include <poll.h>
 #include <sched.h>
 #include <sys/socket.h>
+#include <sys/syscall.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -15,97 +19,114 @@ namespace vl::remote {
 
 namespace {
 
-/// Bytes before a frame's body: its length, its kind and its call's number.
-constexpr std::size_t header_bytes = sizeof(std::uint32_t) + sizeof(std::uint8_t) + sizeof(std::uint64_t);
+/// Bytes before a frame's body: its kind and its call's number.
+constexpr std::size_t header_bytes = sizeof(std::uint8_t) + sizeof(std::uint64_t);
 
-/// How long a receive looks for an answer before it sleeps (see wait_briefly).
+/// How long an end looks at the box before it sleeps. An answer to a call of a leaf
+/// comes within a microsecond; waking a sleeper takes tens of them.
 const int spin_microseconds = [] {
     const char* s = std::getenv("VL_REMOTE_SPIN_US");
-    return s != nullptr && *s != '\0' ? std::atoi(s) : 50;
+    return s != nullptr && *s != '\0' ? std::atoi(s) : 100;
 }();
 
-/// An answer usually comes within microseconds, sooner than a sleeping process is woken
-/// (tens of microseconds here): so look for it for a while before sleeping. The bytes
-/// read, or -1 when none came in time.
-ssize_t wait_briefly(int fd, std::vector<char>& into) {
-    const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(spin_microseconds);
-    do {
-        for (int k = 0; k < 64; ++k) {
-            const ssize_t got = ::recv(fd, into.data(), into.size(), MSG_DONTWAIT);
-            if (got >= 0 || (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) return got < 0 ? 0 : got;
-        }
-        sched_yield();  // the other end may be waiting for this core
-    } while (std::chrono::steady_clock::now() < until);
-    return -1;
+/// How long a sleeper sleeps before it looks whether the other end is still there.
+constexpr long sleep_nanoseconds = 5'000'000;
+
+void futex_wait(std::atomic<std::uint32_t>& word, std::uint32_t seen) {
+    const timespec t{0, sleep_nanoseconds};
+    syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&word), FUTEX_WAIT, seen, &t, nullptr, 0);
+}
+
+void futex_wake(std::atomic<std::uint32_t>& word) {
+    syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&word), FUTEX_WAKE, 1, nullptr, nullptr, 0);
+}
+
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
 }
 
 }  // namespace
 
-endpoint::endpoint(int fd, std::vector<handler> handlers, std::string peer)
-    : fd_(fd), handlers_(std::move(handlers)), peer_(std::move(peer)) {}
+endpoint::endpoint(int socket, void* shared, bool judge_side, std::vector<handler> handlers, std::string peer)
+    : socket_(socket),
+      out_(static_cast<shared_box*>(shared) + (judge_side ? 0 : 1)),
+      in_(static_cast<shared_box*>(shared) + (judge_side ? 1 : 0)),
+      read_(0),  // a fresh box: the other end may have written before this end was made
+      handlers_(std::move(handlers)),
+      peer_(std::move(peer)) {}
 
 void endpoint::broken(const std::string& why) {
     if (broken_.empty()) broken_ = why;
     throw protocol_error(broken_);
 }
 
-void endpoint::send(kind k, std::uint64_t number, const std::vector<char>& body) {
-    if (body.size() + header_bytes - sizeof(std::uint32_t) > max_message_bytes)
-        throw protocol_error("a message of " + std::to_string(body.size()) + " bytes is too large to send");
-    message_writer w;
-    w.put(static_cast<std::uint32_t>(body.size() + header_bytes - sizeof(std::uint32_t))).put(k).put(number);
-    std::vector<char>& bytes = w.bytes();
-    bytes.insert(bytes.end(), body.begin(), body.end());
-    std::size_t at = 0;
-    while (at < bytes.size()) {
-        // send() with MSG_NOSIGNAL: an end that has gone is an error here, never a SIGPIPE.
-        const ssize_t n = ::send(fd_, bytes.data() + at, bytes.size() - at, MSG_NOSIGNAL);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) broken(peer_ + " closed the connection (" + std::strerror(errno) + ")");
-        at += static_cast<std::size_t>(n);
+bool endpoint::peer_there() {
+    pollfd p{socket_, POLLIN | POLLRDHUP, 0};
+    // Nothing is ever sent on the socket: anything there is its end.
+    return poll(&p, 1, 0) == 0;
+}
+
+bool endpoint::wait_for_frame() {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(spin_microseconds);
+    for (int round = 0;; ++round) {
+        for (int k = 0; k < 256; ++k) {
+            if (in_->written.load(std::memory_order_acquire) != read_) return true;
+            cpu_relax();
+        }
+        if ((round & 15) == 15 && std::chrono::steady_clock::now() > until) break;
+        sched_yield();  // the other end may be waiting for this core
+    }
+    for (;;) {
+        in_->sleeping.store(1);
+        const std::uint32_t seen = in_->written.load();
+        if (seen == read_) futex_wait(in_->written, seen);
+        in_->sleeping.store(0);
+        if (in_->written.load(std::memory_order_acquire) != read_) return true;
+        if (!peer_there()) return false;
     }
 }
 
-void endpoint::read_exactly(char* into, std::size_t n, bool& ended) {
-    while (n > 0) {
-        if (in_at_ == in_.size()) {
-            in_.resize(64 << 10);
-            in_at_ = 0;
-            ssize_t got = wait_briefly(fd_, in_);
-            if (got < 0) {
-                do got = ::read(fd_, in_.data(), in_.size());
-                while (got < 0 && errno == EINTR);
-            }
-            in_.resize(got > 0 ? static_cast<std::size_t>(got) : 0);
-            if (got <= 0) {
-                ended = true;
-                return;
-            }
+void endpoint::wait_until_taken() {
+    const std::uint32_t written = out_->written.load(std::memory_order_relaxed);
+    for (int round = 0; out_->taken.load(std::memory_order_acquire) != written; ++round) {
+        if (round < 4096) {
+            sched_yield();
+        } else {
+            if (!peer_there()) broken(peer_ + " has gone");
+            const timespec t{0, 50'000};
+            nanosleep(&t, nullptr);
         }
-        const std::size_t take = std::min(n, in_.size() - in_at_);
-        std::memcpy(into, in_.data() + in_at_, take);
-        in_at_ += take;
-        into += take;
-        n -= take;
     }
+}
+
+void endpoint::send(kind k, std::uint64_t number, const std::vector<char>& body) {
+    if (body.size() + header_bytes > max_message_bytes)
+        throw protocol_error("a message of " + std::to_string(body.size()) + " bytes is too large to send");
+    wait_until_taken();
+    std::memcpy(out_->bytes, &k, sizeof k);
+    std::memcpy(out_->bytes + sizeof k, &number, sizeof number);
+    if (!body.empty()) std::memcpy(out_->bytes + header_bytes, body.data(), body.size());
+    out_->length.store(static_cast<std::uint32_t>(header_bytes + body.size()), std::memory_order_relaxed);
+    out_->written.fetch_add(1, std::memory_order_seq_cst);
+    if (out_->sleeping.load(std::memory_order_seq_cst) != 0) futex_wake(out_->written);
 }
 
 bool endpoint::receive(frame& f) {
-    char header[header_bytes];
-    bool ended = false;
-    read_exactly(header, sizeof header, ended);
-    if (ended) return false;
-    std::uint32_t length;
-    std::memcpy(&length, header, sizeof length);
-    if (length > max_message_bytes || length < header_bytes - sizeof length)
+    if (!wait_for_frame()) return false;
+    read_ = in_->written.load(std::memory_order_acquire);
+    // Copied out before it is read: the other end may write the box at any time.
+    const std::uint32_t length = in_->length.load(std::memory_order_relaxed);
+    if (length > max_message_bytes || length < header_bytes)
         broken(peer_ + " sent a message of " + std::to_string(length) + " bytes (at most " +
                std::to_string(max_message_bytes) + " are read)");
-    std::memcpy(&f.k, header + sizeof length, sizeof f.k);
-    std::memcpy(&f.number, header + sizeof length + sizeof f.k, sizeof f.number);
-    std::vector<char> body(length - (header_bytes - sizeof length));
-    read_exactly(body.data(), body.size(), ended);
-    if (ended) broken(peer_ + " ended in the middle of a message");
-    f.body = message_reader(std::move(body));
+    std::vector<char> bytes(in_->bytes, in_->bytes + length);
+    in_->taken.store(read_, std::memory_order_release);
+    std::memcpy(&f.k, bytes.data(), sizeof f.k);
+    std::memcpy(&f.number, bytes.data() + sizeof f.k, sizeof f.number);
+    bytes.erase(bytes.begin(), bytes.begin() + header_bytes);
+    f.body = message_reader(std::move(bytes));
     return true;
 }
 
@@ -127,15 +148,14 @@ void endpoint::serve_call(frame& f) {
 message_reader endpoint::call(op_id op, const message_writer& args, const char* what) {
     if (!broken_.empty()) throw protocol_error(broken_);
     const std::uint64_t number = ++next_call_;
-    message_writer w;
-    w.put(op);
-    std::vector<char> body = w.bytes();
-    body.insert(body.end(), args.bytes().begin(), args.bytes().end());
+    const std::vector<char>& a = args.bytes();
+    std::vector<char> body(sizeof op + a.size());
+    std::memcpy(body.data(), &op, sizeof op);
+    if (!a.empty()) std::memcpy(body.data() + sizeof op, a.data(), a.size());
     send(kind::call, number, body);
     for (;;) {
         frame f;
-        if (!receive(f))
-            broken(peer_ + " ended (it crashed or ended itself) while answering " + what);
+        if (!receive(f)) broken(peer_ + " ended (it crashed or ended itself) while answering " + what);
         switch (f.k) {
             case kind::call: serve_call(f); break;
             case kind::release:

@@ -1,21 +1,28 @@
 #pragma once
 /// \file
-/// \brief One end of the connection between the judge (the hidden tests, trusted) and the
+/// \brief One end of a connection between the judge (the hidden tests, trusted) and the
 /// subject (the student's code, in its sandbox): calls that cross it, answers that come
 /// back, and calls back the other way.
 ///
-/// A message is a frame: its length (4 bytes, at most max_message_bytes), its kind
-/// (call, result, thrown, release), the number of the call it belongs to, then its body.
-/// A call carries an operation number and its arguments; the other end answers with
-/// a result or with the exception the call threw. While an end waits for its answer it
-/// serves the calls the other end makes meanwhile (a composite in the subject asking a
-/// child that lives in the judge), so calls nest in both directions.
+/// A message is a frame: its kind (call, result, thrown, release), the number of the call
+/// it belongs to, then its body. A call carries an operation number and its arguments;
+/// the other end answers with a result or with the exception the call threw. While an
+/// end waits for its answer it serves the calls the other end makes meanwhile (a
+/// composite in the subject asking a child that lives in the judge), so calls nest in
+/// both directions.
 ///
-/// The judge trusts nothing that arrives: an answer to another call than the one
-/// waiting, a frame too large or malformed, or the end of the connection breaks the
-/// endpoint for good, and the call (and every later one) throws protocol_error, saying
-/// what happened in the student's terms. That failure is the submission's: the test
-/// that made the call fails.
+/// Frames cross through memory the two processes share (a `shared_boxes`: one box each
+/// way), because a test may make millions of calls and a round trip through the kernel
+/// costs microseconds: an end that waits looks at the box for a while before it sleeps
+/// (a futex), and the writer wakes it. A socket beside the boxes carries nothing; its
+/// end is how each side learns that the other has gone.
+///
+/// The judge trusts nothing that arrives: it copies a frame out of the box before it
+/// reads it, and an answer to another call than the one waiting, a frame too large or
+/// malformed, or the other end's going breaks the endpoint for good: the call (and every
+/// later one) throws protocol_error, saying what happened in the student's terms. That
+/// failure is the submission's: the test that made the call fails.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -30,7 +37,7 @@ namespace vl::remote {
 /// own over it (connections.hh).
 inline constexpr int channel_fd = 5;
 
-/// The largest frame either end accepts: an answer that claims more is a flood.
+/// The largest frame either end sends or accepts: an answer that claims more is a flood.
 inline constexpr std::uint32_t max_message_bytes = 16u << 20;
 
 /// An operation's number: each stage's calls file (calls_NN.hh) lists its own.
@@ -43,12 +50,28 @@ using handle = std::uint64_t;
 /// it throws crosses as the call's answer (see exceptions.hh).
 using handler = std::function<void(message_reader& args, message_writer& result)>;
 
-/// \brief One end of the connection.
+/// \brief One direction's box in the shared memory: a frame and the count of frames
+/// written so far (the futex word the reader sleeps on).
+struct alignas(64) shared_box {
+    std::atomic<std::uint32_t> written{0};   ///< frames written; changes once per frame
+    std::atomic<std::uint32_t> sleeping{0};  ///< the reader sleeps (wake it)
+    std::atomic<std::uint32_t> length{0};    ///< the frame's bytes
+    std::atomic<std::uint32_t> taken{0};     ///< frames the reader has copied out
+    char pad[48];
+    char bytes[max_message_bytes];
+};
+
+/// The size of the memory a connection shares: one box each way.
+inline constexpr std::size_t shared_bytes = 2 * sizeof(shared_box);
+
+/// \brief One end of a connection.
 class endpoint {
 public:
-    /// `fd`: a connected stream socket (the endpoint does not own it). `handlers[op]`
-    /// serves the calls the other end makes; `peer` names the other end in messages.
-    endpoint(int fd, std::vector<handler> handlers, std::string peer);
+    /// `socket`: the connection's socket (the endpoint does not own it); `shared`: its
+    /// shared memory (shared_bytes); `judge_side`: which box this end writes.
+    /// `handlers[op]` serves the calls the other end makes; `peer` names the other end
+    /// in messages.
+    endpoint(int socket, void* shared, bool judge_side, std::vector<handler> handlers, std::string peer);
 
     /// Calls `op` at the other end with `args` and returns its result to read. `what`
     /// names the call for a student ("inverse", "the camera's primary_ray"). Rethrows
@@ -60,8 +83,8 @@ public:
     /// never throws: a destructor calls it).
     void release(handle h) noexcept;
 
-    /// Serves calls until the other end closes the connection (returns), or breaks the
-    /// protocol (throws protocol_error). The subject's main loop.
+    /// Serves calls until the other end goes (returns), or breaks the protocol (throws
+    /// protocol_error). The subject's main loop.
     void serve();
 
     /// Called for each release that arrives.
@@ -75,20 +98,27 @@ private:
         message_reader body;
     };
 
-    /// The next frame; false at the end of the connection.
+    /// The next frame; false when the other end has gone.
     bool receive(frame& f);
     void send(kind k, std::uint64_t number, const std::vector<char>& body);
     void serve_call(frame& f);
     [[noreturn]] void broken(const std::string& why);
-    void read_exactly(char* into, std::size_t n, bool& ended);
+    /// Waits until the incoming box holds a frame not yet read; false when the other end
+    /// has gone.
+    bool wait_for_frame();
+    /// True while the other end's side of the socket is open.
+    bool peer_there();
+    /// Waits until the reader has copied out the last frame written to the outgoing box.
+    void wait_until_taken();
 
-    int fd_;
+    int socket_;
+    shared_box* out_;
+    shared_box* in_;
+    std::uint32_t read_ = 0;  ///< frames read from the incoming box
     std::vector<handler> handlers_;
     std::string peer_;
     std::uint64_t next_call_ = 0;
     std::string broken_;  ///< why the endpoint is broken, or ""
-    std::vector<char> in_;  ///< read ahead
-    std::size_t in_at_ = 0;
 };
 
 }  // namespace vl::remote

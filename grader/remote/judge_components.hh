@@ -39,9 +39,21 @@ surface_values surface_of(handle h);
 void enter_stand_in(handle h, const rtab_component* stand_in);
 void forget_stand_in(handle h);
 
+/// \brief What every stand-in is, whatever its base: the handle of its object, and a
+/// way to bring that object up to date before a call made around the stand-in.
+class remote_identity {
+public:
+    virtual handle remote_id() const = 0;
+    /// Sends the subject what changed in the stand-in since its last call.
+    virtual void bring_up_to_date() const = 0;
+
+protected:
+    ~remote_identity() = default;
+};
+
 /// \brief A `Base` whose overridable members are the subject's object's.
 template <class Base>
-class remote_component : public Base {
+class remote_component : public Base, public remote_identity {
 public:
     using Base::Base;
     ~remote_component() override {
@@ -58,6 +70,8 @@ public:
         enter_stand_in(h, this);
     }
     handle id() const { return handle_; }
+    handle remote_id() const override { return handle_; }
+    void bring_up_to_date() const override { sync(); }
 
     vector normal(const point& p) const override { return (sync(), component_calls::normal(handle_, p)); }
     bool contains(const point& p) const override { return (sync(), component_calls::contains(handle_, p)); }

@@ -1,5 +1,6 @@
 #include "judge_connection.hh"
 
+#include <sys/mman.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -58,16 +59,20 @@ endpoint& subject() {
         int ends[2];
         if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
             throw protocol_error(std::string("socketpair: ") + std::strerror(errno));
+        const int memory = memfd_create("vl-connection", MFD_CLOEXEC);
+        void* shared = memory >= 0 && ftruncate(memory, static_cast<off_t>(shared_bytes)) == 0 ? map_shared(memory) : nullptr;
+        if (shared == nullptr) throw protocol_error(std::string("the judge cannot share memory: ") + std::strerror(errno));
         {
             const std::lock_guard<std::mutex> lock(handing_over);
-            const bool sent = send_descriptor(control_fd(), ends[1]);
+            const bool sent = send_connection(control_fd(), {ends[1], memory});
             close(ends[1]);
+            close(memory);
             if (!sent) {
                 close(ends[0]);
                 throw protocol_error("your code's process is not there to take a connection (it ended, or crashed)");
             }
         }
-        mine = new endpoint(ends[0], std::vector<handler>{}, "your code's process");
+        mine = new endpoint(ends[0], shared, true, std::vector<handler>{}, "your code's process");
     }
     return *mine;
 }

@@ -96,6 +96,15 @@ void add_component_handlers(std::vector<handler>& table) {
         const intersection i = components().at(h).intersect(r);
         out.put(i.t).put(components().name(i.object));
     };
+    table[c::intersect_each] = [](message_reader& in, message_writer& out) {
+        const auto objects = in.get_vector<handle>(c::max_batch);
+        const auto r = in.get<ray>();
+        in.finish();
+        for (const handle h : objects) {
+            const intersection i = components().at(h).intersect(r);
+            out.put(i.t).put(components().name(i.object));
+        }
+    };
     table[c::normal] = member<point>([](const rtab_component& o, const point& p) { return o.normal(p); });
     table[c::contains] = member<point>([](const rtab_component& o, const point& p) { return o.contains(p); });
     table[c::min_point] = member<>([](const rtab_component& o) { return o.min_point(); });

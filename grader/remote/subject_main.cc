@@ -17,9 +17,15 @@ int main() {
     const std::vector<handler> handlers = subject_handlers();
     std::atomic<bool> broken = false;
     std::vector<std::thread> served;
-    for (int fd; (fd = receive_descriptor(channel_fd)) >= 0;) {
-        served.emplace_back([fd, &handlers, &broken] {
-            endpoint judge(fd, handlers, "the judge");
+    for (connection_fds c; (c = receive_connection(channel_fd)).socket >= 0;) {
+        void* shared = map_shared(c.memory);
+        close(c.memory);
+        if (shared == nullptr) {
+            std::cerr << "subject: cannot map a connection's memory\n";
+            return 3;
+        }
+        served.emplace_back([c, shared, &handlers, &broken] {
+            endpoint judge(c.socket, shared, false, handlers, "the judge");
             judge.on_release = release_object;
             try {
                 judge.serve();
@@ -27,7 +33,7 @@ int main() {
                 std::cerr << "subject: " << e.what() << "\n";
                 broken = true;
             }
-            close(fd);
+            close(c.socket);
         });
     }
     for (std::thread& t : served) t.join();

@@ -37,22 +37,27 @@ public:
     template <class T>
     message_writer& put(const T& value) {
         static_assert(std::is_trivially_copyable_v<T>, "only plain values cross as bytes");
-        const auto* p = reinterpret_cast<const char*>(&value);
-        bytes_.insert(bytes_.end(), p, p + sizeof(T));
+        append(&value, sizeof(T));
         return *this;
     }
     message_writer& put_string(std::string_view s) {
         put(static_cast<std::uint32_t>(s.size()));
-        bytes_.insert(bytes_.end(), s.begin(), s.end());
+        append(s.data(), s.size());
         return *this;
     }
     template <class T>
     message_writer& put_vector(const std::vector<T>& v) {
         static_assert(std::is_trivially_copyable_v<T>, "only plain values cross as bytes");
         put(static_cast<std::uint32_t>(v.size()));
-        const auto* p = reinterpret_cast<const char*>(v.data());
-        bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(T));
+        append(v.data(), v.size() * sizeof(T));
         return *this;
+    }
+    /// Appends `n` bytes from `from`.
+    void append(const void* from, std::size_t n) {
+        if (n == 0) return;
+        const std::size_t at = bytes_.size();
+        bytes_.resize(at + n);
+        std::memcpy(bytes_.data() + at, from, n);
     }
     const std::vector<char>& bytes() const { return bytes_; }
     std::vector<char>& bytes() { return bytes_; }

@@ -7,9 +7,19 @@
 // The grader names the pieces in the environment variable VL_GRADED_PIECES, a list of
 // `camera`, `sampler:NAME`, `tracer:NAME` and object type names (`SPHERE`) separated by
 // spaces. Without it (the reference renders) every piece is the linked stage code's.
-// The reference's copy of each stage is compiled into namespace vl::reference_stageNN
-// (grader/CMakeLists.txt), so it links beside the submission's vl::stageNN; the stages are
-// those the build declares (graded_stages.hh, generated from graded_stages.hh.in).
+// The reference's pieces of the graded stage come from its oracle, a second copy compiled
+// into namespace vl::reference_stageNN so that it links beside the submission's
+// vl::stageNN (vl_grader_oracle_library in cmake/grader.cmake), through its entry
+// vl::graded::register_reference_pieces; the other stages' pieces are the linked code's,
+// which is their reference.
+//
+// A render links no reference code of the pieces its scenes grade: the grader links one
+// render program per set of graded pieces, without the oracle's objects that hold them
+// (build_submission.cc, oracle.hh). The oracle's registration still names their
+// functions; the grader binds each to vl_grader_withheld_reference below, which is all a
+// call of them reaches. The grader names all those pieces in VL_GRADED_PIECES, so this
+// file never asks the reference for one: if it did, the render stops as the grader's
+// mistake (exit status 120, a line that starts with "grader:").
 //
 // The selection is read while the program starts, before any of the submission's code
 // runs: this file comes first on the link line, so its initialisers run first.
@@ -24,6 +34,27 @@
 #include "all_pieces.hh"
 #include "graded_stages.hh"
 #include "vl/registry.hh"
+
+namespace {
+
+/// The piece this file is asking the reference for, while it does (else nullptr).
+thread_local const std::string* asking_reference = nullptr;
+
+}  // namespace
+
+/// What the functions of the pieces a render withholds are bound to (by the grader's link,
+/// --defsym): they are called with their own arguments, which this never reads, and it
+/// never returns.
+extern "C" [[noreturn]] void vl_grader_withheld_reference() {
+    if (const std::string* piece = asking_reference) {
+        std::fprintf(stderr, "grader: VL_GRADED_PIECES leaves '%s' to the reference, which this render program does "
+                             "not link\n", piece->c_str());
+        std::_Exit(120);
+    }
+    std::fputs("this render program links no reference code of the pieces its scene grades: a call of it reached "
+               "none\n", stderr);
+    std::abort();
+}
 
 namespace vl {
 
@@ -59,8 +90,7 @@ const registry& submission_pieces() {
 const registry& reference_pieces() {
     static const registry r = [] {
         registry out;
-        register_framework(out);
-        graded::register_reference_stages(out);
+        graded::register_reference_pieces(out);
         return out;
     }();
     return r;
@@ -77,9 +107,24 @@ std::set<std::string> both(const std::vector<std::string>& a, const std::vector<
     return out;
 }
 
-/// The registry piece `key` comes from.
-const registry& source_of(const std::string& key) {
-    return chosen.everything || chosen.pieces.contains(key) ? submission_pieces() : reference_pieces();
+/// The registry piece `key` comes from: the submission's when the grader names it (or
+/// names nothing), else the reference's oracle when it has the piece (`theirs_has`: a piece
+/// of the graded stage), else the linked code (another stage's reference, the framework).
+const registry& source_of(const std::string& key, bool theirs_has) {
+    return chosen.everything || chosen.pieces.contains(key) || !theirs_has ? submission_pieces() : reference_pieces();
+}
+
+/// `make()`, a call of `from`'s factory for `key`; while the reference's runs, a call that
+/// reaches a withheld piece's code names `key` as the grader's mistake.
+template <class Make>
+auto made(const registry& from, const std::string& key, Make make) {
+    if (&from != &reference_pieces()) return make();
+    struct restore {
+        const std::string* before;
+        ~restore() { asking_reference = before; }
+    } guard{asking_reference};
+    asking_reference = &key;
+    return make();
 }
 
 }  // namespace
@@ -100,20 +145,24 @@ void register_all_pieces(registry& r) {
         }
     }
     for (const std::string& n : both(mine.names(), theirs.names())) {
-        const registry& from = source_of(n).contains(n) ? source_of(n) : mine;
-        r.add(n, [&from, n] { return from.create(n); });
+        const registry& from = source_of(n, theirs.contains(n));
+        r.add(n, [&from, n] { return made(from, n, [&] { return from.create(n); }); });
     }
     for (const std::string& n : both(mine.sampler_names(), theirs.sampler_names())) {
-        const registry& from = source_of("sampler:" + n);
-        r.add_sampler(n, [&from, n] { return from.make_sampler(n); });
+        const std::string key = "sampler:" + n;
+        const registry& from = source_of(key, listed(theirs.sampler_names(), n));
+        r.add_sampler(n, [&from, n, key] { return made(from, key, [&] { return from.make_sampler(n); }); });
     }
     for (const std::string& n : both(mine.tracer_names(), theirs.tracer_names())) {
-        const registry& from = source_of("tracer:" + n);
-        r.add_tracer(n, [&from, n](const scene& s) { return from.make_tracer(n, s); });
+        const std::string key = "tracer:" + n;
+        const registry& from = source_of(key, listed(theirs.tracer_names(), n));
+        r.add_tracer(n, [&from, n, key](const scene& s) { return made(from, key, [&] { return from.make_tracer(n, s); }); });
     }
-    const registry& cameras = source_of("camera");
+    const registry& cameras = source_of("camera", theirs.has_camera());
     if (cameras.has_camera())
-        r.set_camera([&cameras](const camera_settings& s, int w, int h) { return cameras.make_camera(s, w, h); });
+        r.set_camera([&cameras, key = std::string("camera")](const camera_settings& s, int w, int h) {
+            return made(cameras, key, [&] { return cameras.make_camera(s, w, h); });
+        });
 }
 
 }  // namespace vl

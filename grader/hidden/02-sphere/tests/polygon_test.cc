@@ -114,8 +114,11 @@ void check_ray(tally& t, const primitive& poly, const shape& v, const ray& r, do
 }
 
 bool any_hit(const std::vector<std::unique_ptr<primitive>>& faces, const ray& r) {
+    std::vector<const rtab_component*> objects;
+    for (const auto& f : faces) objects.push_back(f.get());
+    const std::vector<intersection> hits = vl::grading::intersect_each(objects, r);
     bool hit = false;
-    for (const auto& f : faces) hit = clean_hit(f->intersect(r), f.get()) || hit;
+    for (std::size_t k = 0; k < faces.size(); ++k) hit = clean_hit(hits[k], faces[k].get()) || hit;
     return hit;
 }
 

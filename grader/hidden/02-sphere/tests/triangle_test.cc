@@ -76,8 +76,11 @@ const std::vector<corners> triangles = {
 };
 
 bool mesh_hit(const mesh& m, const ray& r) {
+    std::vector<const rtab_component*> faces_of_mesh;
+    for (const auto& t : m) faces_of_mesh.push_back(t.get());
+    const std::vector<intersection> hits = vl::grading::intersect_each(faces_of_mesh, r);
     bool hit = false;
-    for (const auto& t : m) hit = clean_hit(t->intersect(r), t.get()) || hit;
+    for (std::size_t k = 0; k < m.size(); ++k) hit = clean_hit(hits[k], m[k].get()) || hit;
     return hit;
 }
 
