@@ -62,19 +62,72 @@ function(vl_grader_reference_library stage)
   target_link_libraries(vl_grader_reference_${number} PUBLIC vl_framework PRIVATE vl_warnings)
 endfunction()
 
-# vl_grader_oracle_library(NN-name): vl_grader_oracle_NN, the stage's reference again,
-# compiled into namespace vl::reference_stageNN instead of vl::stageNN, so that it can be
-# linked beside a submission's code of the same stage: the grader's render program takes
-# from it every piece a graded scene does not take from the submission.
+# vl_grader_oracle_library(NN-name): the stage's oracle, its reference compiled a second
+# time into namespace vl::reference_stageNN instead of vl::stageNN, so that it links beside
+# a submission's code of the same stage: the grader's render program takes from it every
+# piece of the stage a graded scene does not take from the submission. A render must link
+# no reference code of the pieces its scene grades, so the oracle comes in parts:
+#   vl_grader_oracle_NN               the reference's .cc files (OBJECT), one object each
+#   vl_grader_oracle_registration_NN  the stage's registration and the oracle's entry
+#                                     vl::graded::register_reference_pieces (OBJECT), which
+#                                     every render links
+#   vl_grader_oracle_map_NN           oracle/NN-name.json: for each piece, the objects of
+#                                     the first that hold its code, which a render grading
+#                                     it leaves out (grader/src/oracle_probe.cc derives
+#                                     them from the compiled code: no table to keep)
+# The map is made by vl_grader_oracle_probe_NN, the registration linked without the
+# pieces, whose functions are traps that name themselves (cmake/grader_oracle_traps.cmake
+# writes them).
 function(vl_grader_oracle_library stage)
   string(SUBSTRING ${stage} 0 2 number)
-  vl_grader_reference_sources(${stage} sources)
-  add_library(vl_grader_oracle_${number} STATIC ${sources})
-  target_compile_definitions(vl_grader_oracle_${number} PRIVATE stage${number}=reference_stage${number})
-  target_include_directories(vl_grader_oracle_${number} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
+  set(reference_dir ${PROJECT_SOURCE_DIR}/reference/${stage})
+  file(GLOB sources CONFIGURE_DEPENDS ${reference_dir}/*.cc)
+  file(GLOB headers CONFIGURE_DEPENDS ${reference_dir}/*.hh ${reference_dir}/*.h)
+  vl_stage_registration(${stage} registration)
+  if(EXISTS ${reference_dir}/register.cc)
+    set(registration ${reference_dir}/register.cc)
+    list(REMOVE_ITEM sources ${registration})
+  endif()
+  if(NOT registration)
+    message(FATAL_ERROR "stage ${stage}: no assignments/${stage}/register.cc (nor reference/${stage}/register.cc): "
+                        "the grader's render program needs the stage's registration apart from its pieces")
+  endif()
+  set(dir ${CMAKE_CURRENT_BINARY_DIR}/oracle)
+  vl_generate_for_stages(${PROJECT_SOURCE_DIR}/grader/hidden/common/reference_pieces.cc.in
+                         ${dir}/reference_pieces_${number}.cc STAGES ${stage})
+  add_library(vl_grader_oracle_${number} OBJECT ${sources})
+  add_library(vl_grader_oracle_registration_${number} OBJECT ${registration} ${dir}/reference_pieces_${number}.cc)
   vl_grader_contract_dirs(contracts)
-  target_include_directories(vl_grader_oracle_${number} PUBLIC ${contracts})
-  target_link_libraries(vl_grader_oracle_${number} PUBLIC vl_framework PRIVATE vl_warnings)
+  foreach(part IN ITEMS vl_grader_oracle_${number} vl_grader_oracle_registration_${number})
+    target_compile_definitions(${part} PRIVATE stage${number}=reference_stage${number})
+    target_include_directories(${part} BEFORE PUBLIC ${PROJECT_SOURCE_DIR}/assignments/${stage})
+    target_include_directories(${part} PUBLIC ${contracts})
+    target_link_libraries(${part} PUBLIC vl_framework PRIVATE vl_warnings)
+  endforeach()
+
+  set(traps ${dir}/probe_traps_${number}.cc)
+  add_custom_command(OUTPUT ${traps}
+    COMMAND ${CMAKE_COMMAND} -DNM=${CMAKE_NM} -DSTAGE=${stage}
+            "-DREGISTRATION=$<TARGET_OBJECTS:vl_grader_oracle_registration_${number}>"
+            "-DPIECES=$<TARGET_OBJECTS:vl_grader_oracle_${number}>" -DOUT=${traps}
+            -P ${PROJECT_SOURCE_DIR}/cmake/grader_oracle_traps.cmake
+    DEPENDS $<TARGET_OBJECTS:vl_grader_oracle_registration_${number}> $<TARGET_OBJECTS:vl_grader_oracle_${number}>
+            ${PROJECT_SOURCE_DIR}/cmake/grader_oracle_traps.cmake
+    COMMENT "Finding the functions stage ${stage}'s registration takes from its reference"
+    VERBATIM)
+  add_executable(vl_grader_oracle_probe_${number} ${PROJECT_SOURCE_DIR}/grader/src/oracle_probe.cc ${traps}
+                 $<TARGET_OBJECTS:vl_grader_oracle_registration_${number}>)
+  target_include_directories(vl_grader_oracle_probe_${number} PRIVATE ${PROJECT_SOURCE_DIR}/grader/src)
+  target_link_libraries(vl_grader_oracle_probe_${number} PRIVATE vl_framework nlohmann_json::nlohmann_json vl_warnings)
+  set(map ${dir}/${stage}.json)
+  add_custom_command(OUTPUT ${map}
+    COMMAND vl_grader_oracle_probe_${number} --stage ${stage} --reference ${reference_dir} --nm ${CMAKE_NM} --out ${map}
+            --registration $<TARGET_OBJECTS:vl_grader_oracle_registration_${number}>
+            --pieces $<TARGET_OBJECTS:vl_grader_oracle_${number}>
+    DEPENDS vl_grader_oracle_probe_${number} $<TARGET_OBJECTS:vl_grader_oracle_${number}> ${sources} ${headers}
+    COMMENT "Mapping stage ${stage}'s pieces to the reference's objects that hold them"
+    COMMAND_EXPAND_LISTS VERBATIM)
+  add_custom_target(vl_grader_oracle_map_${number} DEPENDS ${map})
 endfunction()
 
 # Renders `scene` with `renderer` into `png` at build time (the reference renders).

@@ -1,8 +1,10 @@
 #include "build_submission.hh"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <csignal>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <set>
@@ -12,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "oracle.hh"
 #include "policy.hh"
 #include "safe_files.hh"
 
@@ -120,6 +123,53 @@ void protected_symbols_of(const installation& in, const stage_info& stage, const
     collect_protected(in, parts, libraries, caps, all, strong);
     keep_cache_file(cache, nlohmann::json{{"identity", identity(libraries)}, {"libraries", libraries}, {"all", all},
                                           {"strong", strong}}.dump() + "\n");
+}
+
+/// Checks that each render program lacks the code of the oracle's objects its plan leaves
+/// out: it defines none of their symbols, and each of their functions that the oracle's
+/// registration calls is vl_grader_withheld_reference. One nm, in a sandbox (the programs
+/// hold the student's code), for all of them. A program that fails is the grader's fault
+/// (a wrong oracle map), never the student's: the grade stops.
+void check_render_links(const installation& in, const fs::path& bin, const std::vector<render_plan>& plans,
+                        const std::function<std::string(std::size_t)>& name, const sandbox_capabilities& caps) {
+    if (plans.empty()) return;
+    run_request rq;
+    rq.mounts = {{bin, "/in", false}};
+    rq.environment = child_environment("/scratch");
+    rq.limits.wall_seconds = 60;
+    rq.limits.output_bytes = 64 << 20;
+    rq.argv = {"/usr/bin/nm", "-A", "-P", "--defined-only"};
+    for (std::size_t k = 0; k < plans.size(); ++k) rq.argv.push_back("/in/" + name(k));
+    const run_result r = run(rq, caps);
+    if (!r.started || !r.succeeded() || r.output_bytes > r.output.size())
+        throw grader_error("nm could not list the render programs' symbols: " + (r.started ? r.output_head(300) : r.error));
+    // "FILE: NAME TYPE VALUE SIZE", mangled names without spaces.
+    std::map<std::string, std::map<std::string, std::string>> values;
+    std::istringstream lines(r.output);
+    for (std::string line; std::getline(lines, line);) {
+        const auto colon = line.find(": ");
+        if (colon == std::string::npos) continue;
+        std::istringstream rest(line.substr(colon + 2));
+        std::string symbol, type, value;
+        if (rest >> symbol >> type >> value) values[line.substr(0, colon)][symbol] = value;
+    }
+    for (std::size_t k = 0; k < plans.size(); ++k) {
+        const std::map<std::string, std::string>& defined = values["/in/" + name(k)];
+        const auto trap = defined.find("vl_grader_withheld_reference");
+        std::vector<std::string> wrong;
+        for (const std::string& s : plans[k].forbidden)
+            if (defined.contains(s)) wrong.push_back(s);
+        for (const std::string& s : plans[k].traps)
+            if (const auto d = defined.find(s); trap == defined.end() || d == defined.end() || d->second != trap->second)
+                wrong.push_back(s + " (not bound to vl_grader_withheld_reference)");
+        if (wrong.empty()) continue;
+        std::string pieces, list;
+        for (const std::string& p : plans[k].withheld_pieces) pieces += (pieces.empty() ? "" : ", ") + p;
+        for (std::size_t i = 0; i < wrong.size() && i < 5; ++i) list += "\n  " + wrong[i];
+        throw grader_error("the render program for the pieces " + pieces + " links reference code of them:" + list +
+                           "\nThe oracle map of this stage (oracle/*.json in " + in.grader_build_dir.string() +
+                           ") leaves out too little: fix grader/src/oracle_probe.cc, then rebuild");
+    }
 }
 
 }  // namespace
@@ -309,11 +359,16 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         renderer.push_back({in.renderer_objects[k], "/vl/prebuilt/rt" + std::to_string(k) + ".o"});
     for (const auto& [name, s] : in.stages)
         if (name != stage.name) group.push_back({s.reference_library, "/vl/prebuilt/reference_" + s.number + ".a"});
-    // Every stage's reference under its other name, for the render program's pieces that a
-    // graded scene does not take from the submission (hidden/common/graded_pieces.cc,
-    // linked first, pulls them in). The test program does not have them.
-    for (const auto& [name, s] : in.stages)
-        renderer.push_back({s.oracle_library, "/vl/prebuilt/oracle_" + s.number + ".a"});
+    // The graded stage's oracle, its reference under its other name, for the pieces a graded
+    // scene does not take from the submission (hidden/common/graded_pieces.cc): each render
+    // program links the oracle's registration and the objects of the pieces its scenes do
+    // not grade (oracle.hh). The test program has none of it.
+    const oracle_map oracle = load_oracle_map(stage);
+    std::vector<std::size_t> render_of;
+    const std::vector<render_plan> plans = plan_renders(oracle, options.scene_pieces, render_of);
+    std::map<fs::path, prebuilt_part> oracle_parts;
+    for (const oracle_map::object& o : oracle.objects)
+        oracle_parts.emplace(o.path, prebuilt_part{o.path, "/vl/prebuilt/oracle" + std::to_string(oracle_parts.size()) + ".o"});
     for (std::size_t k = 0; k < in.framework_libraries.size(); ++k)
         group.push_back({in.framework_libraries[k], "/vl/prebuilt/framework" + std::to_string(k) + ".a"});
     const prebuilt_part catch_main{in.catch_main, "/vl/prebuilt/catch_main.a"};
@@ -340,6 +395,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
             std::set<std::string> protected_symbols, strong;
             std::vector<prebuilt_part> parts = hidden;
             parts.insert(parts.end(), renderer.begin(), renderer.end());
+            for (const auto& [path, part] : oracle_parts) parts.push_back(part);
             parts.insert(parts.end(), group.begin(), group.end());
             parts.push_back(catch_main);
             protected_symbols_of(in, stage, parts, caps, protected_symbols, strong);
@@ -410,9 +466,69 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
             b.errors += r.timed_out ? "linking " + r.describe(rq.limits.wall_seconds) + "\n" : explain_link_errors(r.output, sub.files);
         return r.succeeded() && is_regular(bin / program);
     };
+    // The render programs (render-0, render-1, ...): the renderer, the student's objects, the
+    // oracle's objects of each plan, and the functions of the pieces it leaves out bound to
+    // vl_grader_withheld_reference. Two links at a time.
+    auto render_name = [](std::size_t k) { return "render-" + std::to_string(k); };
+    auto link_render = [&](std::size_t k, std::string& errors) {
+        run_request rq;
+        rq.mounts = {{objects, "/in", false}, {bin, "/out", true}};
+        std::vector<std::string> argv = {in.cxx_compiler.string()};
+        argv.insert(argv.end(), in.link_flags.begin(), in.link_flags.end());
+        if (!in.sanitized) argv.push_back("-Wl,--strip-debug");  // as the test program's link
+        argv.insert(argv.end(), {"-pthread", "-o", "/out/" + render_name(k)});
+        auto add = [&](const prebuilt_part& p) {
+            rq.mounts.push_back({p.host, p.inside, false});
+            argv.push_back(p.inside);
+        };
+        for (const prebuilt_part& p : renderer) add(p);
+        for (const std::string& f : sub.files) argv.push_back("/in/" + stem_of(f) + ".o");
+        for (const fs::path& o : plans[k].objects) add(oracle_parts.at(o));
+        for (const std::string& symbol : plans[k].traps)
+            argv.push_back("-Wl,--defsym=" + symbol + "=vl_grader_withheld_reference");
+        argv.push_back("-Wl,--start-group");
+        for (const prebuilt_part& p : group) add(p);
+        argv.push_back("-Wl,--end-group");
+        argv.insert(argv.end(), in.system_libraries.begin(), in.system_libraries.end());
+        rq.argv = argv;
+        rq.environment = child_environment("/scratch");
+        rq.limits.wall_seconds = std::max(1.0, std::min(120.0, left()));
+        rq.limits.memory_bytes = std::uint64_t{4} << 30;
+        rq.limits.file_bytes = std::uint64_t{1} << 30;
+        rq.limits.scratch_bytes = std::uint64_t{256} << 20;
+        rq.limits.processes = 16;
+        const run_result r = run(rq, caps);
+        if (!r.started) return std::string("the sandbox could not run the linker: ") + r.error;
+        if (!r.succeeded())
+            errors = r.timed_out ? "linking " + r.describe(rq.limits.wall_seconds) + "\n" : explain_link_errors(r.output, sub.files);
+        else if (!is_regular(bin / render_name(k)))
+            errors = "linking made no program\n";
+        return std::string();
+    };
+    auto link_renders = [&] {
+        std::vector<std::string> errors(plans.size()), failures(plans.size());
+        std::atomic<std::size_t> next = 0;
+        {
+            std::vector<std::jthread> workers;
+            for (int t = 0; t < 2; ++t)
+                workers.emplace_back([&] {
+                    for (std::size_t k; (k = next++) < plans.size();) failures[k] = link_render(k, errors[k]);
+                });
+        }
+        for (const std::string& f : failures)
+            if (!f.empty()) throw grader_error(f);
+        for (const std::string& e : errors)
+            if (!e.empty()) {
+                b.errors += e;  // the first failed link's account: the student's code is in each
+                return false;
+            }
+        check_render_links(in, bin, plans, render_name, caps);
+        return true;
+    };
+
     const std::string tests_name = judged ? "subject" : "hidden_tests";
     const bool tests_ok = hidden.empty() || link(tests_name, hidden, !judged);
-    const bool render_ok = tests_ok && link("render", renderer, false);
+    const bool render_ok = tests_ok && link_renders();
     b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!tests_ok || !render_ok) {
         b.errors = with_contract_note(sub, b.errors);
@@ -420,7 +536,8 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     }
     b.ok = true;
     if (!hidden.empty()) b.tests = {judged ? stage.judge : fs::path(), bin / tests_name};
-    b.render_program = bin / "render";
+    for (std::size_t k = 0; k < plans.size(); ++k) b.renders.push_back({bin / render_name(k), plans[k].withheld_pieces});
+    b.render_of = render_of;
     return b;
 }
 

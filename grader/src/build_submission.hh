@@ -4,8 +4,9 @@
 /// is preprocessed and compiled (seeing only the framework's headers, the pristine
 /// contracts and the student's own files), its objects and sources are checked against the
 /// policy (policy.hh), and then they are linked, with no source in sight, to the prebuilt
-/// framework, the other stages' reference and the hidden tests (as objects) into two
-/// programs: hidden_tests and render.
+/// framework, the other stages' reference and the hidden tests (as objects) into the test
+/// program (hidden_tests, or the subject of a judge) and, with the renderer and the graded
+/// stage's oracle (oracle.hh), into one render program per set of pieces the scenes grade.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "install.hh"
 #include "sandbox.hh"
 #include "catch_runner.hh"
+#include "scenes.hh"
 #include "submission.hh"
 
 namespace vl::grader {
@@ -24,13 +26,17 @@ struct build_outcome {
     std::string errors;                   ///< the first compiler errors, or the refusals
     double seconds = 0;
     test_programs tests;                  ///< what runs the graded tests (may be empty)
-    std::filesystem::path render_program; ///< rt with the submitted stage
+    std::vector<render_program> renders;  ///< one per distinct set of oracle objects left out
+    std::vector<std::size_t> render_of;   ///< for each of build_options::scene_pieces, its render
 };
 
 /// \brief How to build.
 struct build_options {
     bool policy = true;           ///< false only to test the sandbox alone (calibration)
     double wall_seconds = 600;    ///< what is left of the grade's time
+    /// The pieces each graded scene takes from the submission (its student_pieces; empty:
+    /// all of the stage's): they decide the render programs.
+    std::vector<std::vector<std::string>> scene_pieces;
 };
 
 /// \brief How a compile uses the grader's compile cache (ccache, in the build tree).

@@ -216,7 +216,10 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                               "; graded here with the reference for every other stage");
         }
         seed_compile_cache(in, stage, work / "seed", caps);
-        const build_outcome b = build_submission(sub, stage, in, work / "build", caps, {options.policy, left()});
+        std::vector<std::vector<std::string>> scene_pieces;
+        for (const rubric_scene& s : r.scenes) scene_pieces.push_back(s.student_pieces);
+        const build_outcome b =
+            build_submission(sub, stage, in, work / "build", caps, {options.policy, left(), scene_pieces});
         g.built = b.ok;
         g.items[0].seconds = b.seconds;
         g.items[0].result = b.ok ? item_result::passed : b.refused ? item_result::refused : item_result::failed;
@@ -261,7 +264,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                         r.scenes, [&](const rubric_scene& x) { return x.id == i.tags[1]; }, "scene " + i.tags[1]);
                     run_limits limits = r.render_limits;
                     limits.wall_seconds = std::min(limits.wall_seconds, left());
-                    const scene_outcome o = render_and_compare(b.render_program, s, i.reference_image, renders, limits, caps);
+                    const render_program& program = b.renders.at(b.render_of.at(static_cast<std::size_t>(&s - r.scenes.data())));
+                    const scene_outcome o = render_and_compare(program, s, i.reference_image, renders, limits, caps);
                     i.result = o.matches ? item_result::passed : o.rendered ? item_result::failed : item_result::crashed;
                     i.message = o.message;
                     i.seconds = o.seconds;

@@ -65,7 +65,7 @@ installation load_installation() {
             info.trusted_tests = str(s, "trusted_tests");
             info.tests_on_stubs = str(s, "tests_on_stubs");
             info.reference_library = str(s, "reference_library");
-            info.oracle_library = str(s, "oracle_library");
+            info.oracle_map = str(s, "oracle_map");
             info.hidden_objects = paths(s, "hidden_objects");
             info.judge = str(s, "judge");
             info.subject_objects = paths(s, "subject_objects");

@@ -24,7 +24,9 @@ struct stage_info {
     std::filesystem::path trusted_tests; ///< hidden tests linked with the reference (empty: none)
     std::filesystem::path tests_on_stubs; ///< the same tests linked with the untouched stubs
     std::filesystem::path reference_library;          ///< the stage's reference, a static library
-    std::filesystem::path oracle_library;             ///< the same, in namespace vl::reference_stageNN
+    /// The oracle, the reference again in namespace vl::reference_stageNN: the map of its
+    /// objects and of the pieces they hold (oracle.hh).
+    std::filesystem::path oracle_map;
     std::vector<std::filesystem::path> hidden_objects;  ///< the hidden tests, compiled
     /// The stage's judge: the graded tests, whose calls into the stage cross to a subject
     /// (empty: the stage's tests still run in one program with the submission's code).

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <map>
 
+#include "oracle.hh"
 #include "roster_results.hh"
 
 namespace vl::grader {
@@ -49,7 +50,13 @@ void hash_file(fnv1a64& h, const fs::path& file) {
 std::string setup_hash(const installation& in, const stage_info& stage, const fs::path& grader_program) {
     fnv1a64 h;
     std::vector<fs::path> files = {grader_program, stage.trusted_tests, stage.tests_on_stubs, stage.reference_library,
-                                   stage.oracle_library, in.reference_renderer};
+                                   stage.oracle_map, in.reference_renderer};
+    // The oracle's objects, as its map lists them (without a map, the grades themselves fail
+    // and say why).
+    try {
+        for (const oracle_map::object& o : load_oracle_map(stage).objects) files.push_back(o.path);
+    } catch (const grader_error&) {
+    }
     std::error_code ec;
     std::vector<fs::path> hidden;
     for (auto it = fs::recursive_directory_iterator(in.hidden_dir(stage), ec); !ec && it != fs::recursive_directory_iterator();

@@ -40,7 +40,7 @@ vl::image difference_image(const vl::image& a, const vl::image& b) {
 
 }  // namespace
 
-scene_outcome render_and_compare(const fs::path& render_program, const rubric_scene& scene, const fs::path& reference,
+scene_outcome render_and_compare(const render_program& render, const rubric_scene& scene, const fs::path& reference,
                                  const fs::path& renders, const run_limits& limits, const sandbox_capabilities& caps) {
     scene_outcome o;
     const std::string stem = scene.id;
@@ -50,18 +50,21 @@ scene_outcome render_and_compare(const fs::path& render_program, const rubric_sc
     // public parts resolve; the students have that folder anyway. A hidden scene comes
     // alone: no other hidden scene is visible to the submission's code.
     if (scene.is_public)
-        rq.mounts = {{render_program, "/vl/bin/render", false}, {scene.file.parent_path(), "/vl/scene", false}};
+        rq.mounts = {{render.program, "/vl/bin/render", false}, {scene.file.parent_path(), "/vl/scene", false}};
     else
-        rq.mounts = {{render_program, "/vl/bin/render", false}, {scene.file, scene_inside, false}};
+        rq.mounts = {{render.program, "/vl/bin/render", false}, {scene.file, scene_inside, false}};
     // The image goes to a pipe: out.png is a link to fd 3, so nothing is written to disk.
     rq.symlinks = {{"/proc/self/fd/3", "/scratch/out.png"}};
     rq.argv = {"/vl/bin/render", scene_inside, "-o", "/scratch/out.png", "--threads", "1"};
     rq.environment = child_environment("/scratch");
-    // Which pieces are the submission's (hidden/common/graded_pieces.cc); the others are
-    // the reference's, so the scene depends only on its own category's code.
+    // Which pieces are the submission's (hidden/common/graded_pieces.cc): the scene's, and
+    // those whose reference this program does not link (which share code with them); the
+    // others are the reference's, so the scene depends only on its own category's code.
     if (!scene.student_pieces.empty()) {
+        std::set<std::string> named(scene.student_pieces.begin(), scene.student_pieces.end());
+        named.insert(render.withheld_pieces.begin(), render.withheld_pieces.end());
         std::string pieces;
-        for (const std::string& p : scene.student_pieces) pieces += (pieces.empty() ? "" : " ") + p;
+        for (const std::string& p : named) pieces += (pieces.empty() ? "" : " ") + p;
         rq.environment.push_back("VL_GRADED_PIECES=" + pieces);
     }
     rq.limits = limits;
@@ -70,8 +73,8 @@ scene_outcome render_and_compare(const fs::path& render_program, const rubric_sc
     o.seconds = r.seconds;
     if (!r.started) throw grader_error("the sandbox could not run the renderer: " + r.error);
     if (r.exit_code == 120 && r.output.find("grader: VL_GRADED_PIECES") != std::string::npos)
-        throw grader_error(scene.file.string() + ": the rubric's student_pieces name a piece no stage registers: " +
-                           r.output_head(300));
+        throw grader_error(scene.file.string() + ": the render program stopped on the grader's own mistake in the "
+                           "rubric's student_pieces: " + r.output_head(300));
     if (!r.succeeded() || r.report.empty() || r.report_overflow) {
         o.message = "the render " + (r.report_overflow ? std::string("wrote an image larger than ") +
                                                              std::to_string(limits.report_bytes >> 20) + " MiB"
