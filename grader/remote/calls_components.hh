@@ -24,14 +24,14 @@ enum op : op_id {
     type_name,          ///< -> string
     write,              ///< -> string: what write() wrote
     surface_values,     ///< -> color clr, double kdr, ksr, kdt, kst, n, ior
-    intersect_each,     ///< (no object first) vector of handles, ray -> per object: double t, handle hit
+    intersect_each,     ///< (no object first) vector of handles, vector of rays -> per ray, per object: double t, handle hit
     end,
 };
 
 /// Every operation number is below this: the size of a handler table.
 inline constexpr op_id table_size = 256;
 
-/// The most objects one intersect_each asks.
+/// The most objects, and the most rays, one intersect_each asks (the answer must fit a frame).
 inline constexpr std::size_t max_batch = 1 << 16;
 
 /// The longest text write() may answer with.

@@ -1,5 +1,6 @@
 #include "judge_components.hh"
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -63,9 +64,11 @@ T call_for(c::op op, handle h, message_writer args, const char* what) {
     return value;
 }
 
-/// grading::intersect_each for stand-ins: every object asked in one crossing (false when
-/// one of them is no stand-in, and the test asks them one by one).
-bool intersect_batch(std::span<const rtab_component* const> objects, const ray& r, std::span<intersection> out) {
+/// grading::intersect_all for stand-ins: every object asked for a run of rays in one
+/// crossing, as many rays at a time as keep an answer under a few MiB (false when one of
+/// the objects is no stand-in, and the test asks them one by one).
+bool intersect_batch(std::span<const rtab_component* const> objects, std::span<const ray> rays,
+                     std::span<intersection> out) {
     std::vector<handle> handles;
     handles.reserve(objects.size());
     for (const rtab_component* o : objects) {
@@ -74,20 +77,27 @@ bool intersect_batch(std::span<const rtab_component* const> objects, const ray& 
         remote->bring_up_to_date();
         handles.push_back(remote->remote_id());
     }
-    message_writer w;
-    w.put_vector(handles).put(r);
-    message_reader in = subject().call(c::intersect_each, w, "intersect");
-    for (std::size_t k = 0; k < objects.size(); ++k) {
-        const auto t = in.get<double>();
-        const auto hit = in.get<handle>();
-        out[k] = {t, stand_in_of(hit)};
-        // Counted here as the test's own call of intersect() would have counted it.
-        const int outcome = out[k].object == nullptr ? detail::miss_outcome
-                            : out[k].t == 0          ? detail::composite_only_outcome
-                                                     : detail::hit_outcome;
-        ++detail::thread_tallies.calls[objects[k]->is_composite()][outcome];
+    if (objects.empty()) return true;
+    const std::size_t per_crossing = std::max<std::size_t>(1, (std::size_t{4} << 20) / (16 * objects.size()));
+    for (std::size_t first = 0; first < rays.size(); first += per_crossing) {
+        const std::size_t n = std::min(per_crossing, rays.size() - first);
+        message_writer w;
+        w.put_vector(handles).put_vector(std::vector<ray>(rays.begin() + first, rays.begin() + first + n));
+        message_reader in = subject().call(c::intersect_each, w, "intersect");
+        for (std::size_t k = first; k < first + n; ++k)
+            for (std::size_t j = 0; j < objects.size(); ++j) {
+                const auto t = in.get<double>();
+                const auto hit = in.get<handle>();
+                intersection& i = out[k * objects.size() + j];
+                i = {t, stand_in_of(hit)};
+                // Counted here as the test's own call of intersect() would have counted it.
+                const int outcome = i.object == nullptr ? detail::miss_outcome
+                                    : i.t == 0          ? detail::composite_only_outcome
+                                                        : detail::hit_outcome;
+                ++detail::thread_tallies.calls[objects[j]->is_composite()][outcome];
+            }
+        in.finish();
     }
-    in.finish();
     return true;
 }
 

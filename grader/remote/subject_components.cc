@@ -98,12 +98,15 @@ void add_component_handlers(std::vector<handler>& table) {
     };
     table[c::intersect_each] = [](message_reader& in, message_writer& out) {
         const auto objects = in.get_vector<handle>(c::max_batch);
-        const auto r = in.get<ray>();
+        const auto rays = in.get_vector<ray>(c::max_batch);
         in.finish();
-        for (const handle h : objects) {
-            const intersection i = components().at(h).intersect(r);
-            out.put(i.t).put(components().name(i.object));
-        }
+        if (objects.size() * rays.size() * 16 > max_message_bytes / 2)
+            throw protocol_error("a batch of " + std::to_string(objects.size() * rays.size()) + " intersections is too large");
+        for (const ray& r : rays)
+            for (const handle h : objects) {
+                const intersection i = components().at(h).intersect(r);
+                out.put(i.t).put(components().name(i.object));
+            }
     };
     table[c::normal] = member<point>([](const rtab_component& o, const point& p) { return o.normal(p); });
     table[c::contains] = member<point>([](const rtab_component& o, const point& p) { return o.contains(p); });

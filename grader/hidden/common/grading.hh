@@ -76,25 +76,29 @@ inline void chart_point(const std::string& series, double x, double y) {
 
 /// \name Asking many objects at once
 /// In the grader the student's objects live in another process (grader/README.md, "Who
-/// holds what"), and each call crosses to it. A loop that asks every object of a mesh for
-/// every ray of thousands uses intersect_each, which the judge serves with one crossing
-/// per ray; in one process it is the plain loop.
+/// holds what"), and each call crosses to it. A test that asks every object of a mesh for
+/// each of thousands of rays asks them all at once with intersect_all, which the judge
+/// serves with a few crossings; in one process it is the plain loop.
 ///@{
-/// Fills `out[k]` with `objects[k]->intersect(r)` for every k, as one batch; false when it
-/// cannot (an object that is no stand-in), and then the caller asks them one by one.
-using intersect_batch = bool (*)(std::span<const rtab_component* const> objects, const ray& r,
+/// Fills `out[k * objects.size() + j]` with `objects[j]->intersect(rays[k])`, as one
+/// batch; false when it cannot (an object that is no stand-in), and then the caller asks
+/// them one by one.
+using intersect_batch = bool (*)(std::span<const rtab_component* const> objects, std::span<const ray> rays,
                                  std::span<intersection> out);
 /// The judge's way of asking a batch (set when the judge starts); none in one process.
 inline intersect_batch& batch_of_intersections() {
     static intersect_batch batch = nullptr;
     return batch;
 }
-/// Each object's intersection with `r`, in order: what `objects[k]->intersect(r)` returns,
-/// counted as those calls are counted.
-inline std::vector<intersection> intersect_each(std::span<const rtab_component* const> objects, const ray& r) {
-    std::vector<intersection> out(objects.size());
-    if (const intersect_batch batch = batch_of_intersections(); batch != nullptr && batch(objects, r, out)) return out;
-    for (std::size_t k = 0; k < objects.size(); ++k) out[k] = objects[k]->intersect(r);
+/// Every object's intersection with every ray: element `k * objects.size() + j` is what
+/// `objects[j]->intersect(rays[k])` returns, counted as those calls are counted.
+inline std::vector<intersection> intersect_all(std::span<const rtab_component* const> objects,
+                                               std::span<const ray> rays) {
+    std::vector<intersection> out(objects.size() * rays.size());
+    if (const intersect_batch batch = batch_of_intersections(); batch != nullptr && batch(objects, rays, out))
+        return out;
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        for (std::size_t j = 0; j < objects.size(); ++j) out[k * objects.size() + j] = objects[j]->intersect(rays[k]);
     return out;
 }
 ///@}

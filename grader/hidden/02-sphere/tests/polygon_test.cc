@@ -113,12 +113,15 @@ void check_ray(tally& t, const primitive& poly, const shape& v, const ray& r, do
     }
 }
 
-bool any_hit(const std::vector<std::unique_ptr<primitive>>& faces, const ray& r) {
+/// For each of `rays`, whether it hits at least one of `faces` cleanly; all the rays are
+/// asked at once (vl::grading::intersect_all).
+std::vector<bool> any_hits(const std::vector<std::unique_ptr<primitive>>& faces, const std::vector<ray>& rays) {
     std::vector<const rtab_component*> objects;
     for (const auto& f : faces) objects.push_back(f.get());
-    const std::vector<intersection> hits = vl::grading::intersect_each(objects, r);
-    bool hit = false;
-    for (std::size_t k = 0; k < faces.size(); ++k) hit = clean_hit(hits[k], faces[k].get()) || hit;
+    const std::vector<intersection> hits = vl::grading::intersect_all(objects, rays);
+    std::vector<bool> hit(rays.size(), false);
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        for (std::size_t j = 0; j < faces.size(); ++j) hit[k] = clean_hit(hits[k * faces.size() + j], faces[j].get()) || hit[k];
     return hit;
 }
 
@@ -314,6 +317,8 @@ TEST_CASE("polygon: rays from inside a box of six rectangular faces never escape
     const point middle = o + 0.5 * (x + y + z);
     tally t("rays from inside a closed box of polygons (none of its faces hit)");
     sampler random(33);
+    std::vector<ray> rays;
+    std::vector<point> targets;
     for (int k = 0; k < 20000; ++k) {
         const int i = k % 2, j = (k / 2) % 2, l = (k / 4) % 2;
         point target = corner(i, j, l);
@@ -324,9 +329,12 @@ TEST_CASE("polygon: rays from inside a box of six rectangular faces never escape
         }
         const point from = middle + random.uniform(-0.4, 0.4) * x + random.uniform(-0.4, 0.4) * y +
                            random.uniform(-0.4, 0.4) * z;
-        const ray r = ray_through(from, target);
-        t.check(any_hit(faces, r), [&] { return show(r) + " aimed at " + show(target) + " escapes through the box"; });
+        rays.push_back(ray_through(from, target));
+        targets.push_back(target);
     }
+    const std::vector<bool> hit = any_hits(faces, rays);
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        t.check(hit[k], [&] { return show(rays[k]) + " aimed at " + show(targets[k]) + " escapes through the box"; });
     t.report();
 }
 
@@ -342,14 +350,19 @@ TEST_CASE("polygon: rays through the shared edges and the hub of a ring of quadr
     for (std::size_t k = 0; k < 6; ++k) ring.push_back(make_polygon({hub, rim[2 * k], rim[2 * k + 1], rim[(2 * k + 2) % 12]}));
     tally t("rays through the spokes and the hub of a ring of quadrilaterals (none of them hit)");
     sampler random(34);
+    std::vector<ray> rays;
+    std::vector<point> targets;
     for (int k = 0; k < 20000; ++k) {
         const std::size_t spoke = 2 * static_cast<std::size_t>(k % 6);
         const point target = k % 5 == 0 ? hub : hub + random.uniform(0.01, 0.99) * (rim[spoke] - hub);
         vector d = random.direction();
         if (std::fabs(d * n) < 0.2) d = d + 0.5 * (d * n < 0 ? -n : n);
-        const ray r = ray_through(target + random.uniform(1, 30) * d.unit(), target);
-        t.check(any_hit(ring, r), [&] { return show(r) + " aimed at " + show(target) + " slips through the ring"; });
+        rays.push_back(ray_through(target + random.uniform(1, 30) * d.unit(), target));
+        targets.push_back(target);
     }
+    const std::vector<bool> hit = any_hits(ring, rays);
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        t.check(hit[k], [&] { return show(rays[k]) + " aimed at " + show(targets[k]) + " slips through the ring"; });
     t.report();
 }
 

@@ -75,14 +75,18 @@ const std::vector<corners> triangles = {
     {point(-3, 1, 1), point(4, 1, 1.5), point(0.5, 1, -6)},  // nearly horizontal
 };
 
-bool mesh_hit(const mesh& m, const ray& r) {
+/// For each of `rays`, whether it hits at least one triangle of `m` cleanly; all the rays
+/// are asked at once (vl::grading::intersect_all).
+std::vector<bool> mesh_hits(const mesh& m, const std::vector<ray>& rays) {
     std::vector<const rtab_component*> faces_of_mesh;
     for (const auto& t : m) faces_of_mesh.push_back(t.get());
-    const std::vector<intersection> hits = vl::grading::intersect_each(faces_of_mesh, r);
-    bool hit = false;
-    for (std::size_t k = 0; k < m.size(); ++k) hit = clean_hit(hits[k], m[k].get()) || hit;
+    const std::vector<intersection> hits = vl::grading::intersect_all(faces_of_mesh, rays);
+    std::vector<bool> hit(rays.size(), false);
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        for (std::size_t j = 0; j < m.size(); ++j) hit[k] = clean_hit(hits[k * m.size() + j], m[j].get()) || hit[k];
     return hit;
 }
+bool mesh_hit(const mesh& m, const ray& r) { return mesh_hits(m, {r})[0]; }
 
 // `got` answers like `want`, the same triangle made another way.
 void check_same_triangle(tally& t, const rtab_component& got, const primitive& want, const corners& k, const std::string& who) {
@@ -287,14 +291,19 @@ TEST_CASE("triangle: rays through the spokes and the hub of a fan of sixteen tri
     for (std::size_t k = 0; k < rim.size(); ++k) fan.push_back(make_triangle(hub, rim[k], rim[(k + 1) % rim.size()]));
     tally t("rays through the shared edges and the hub of a fan (none of its triangles hit)");
     sampler random(25);
+    std::vector<ray> rays;
+    std::vector<point> targets;
     for (int k = 0; k < 20000; ++k) {
         const std::size_t spoke = static_cast<std::size_t>(random.uniform(0, 16)) % 16;
         const point target = k % 4 == 0 ? hub : hub + random.uniform(0.02, 0.9) * (rim[spoke] - hub);
         vector d = random.direction();
         if (std::fabs(d.y) < 0.4) continue;  // across the fan, not along it
-        const ray r = ray_through(target + random.uniform(1, 50) * d, target);
-        t.check(mesh_hit(fan, r), [&] { return show(r) + " passes through " + show(target) + " and hits none of the triangles"; });
+        rays.push_back(ray_through(target + random.uniform(1, 50) * d, target));
+        targets.push_back(target);
     }
+    const std::vector<bool> hit = mesh_hits(fan, rays);
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        t.check(hit[k], [&] { return show(rays[k]) + " passes through " + show(targets[k]) + " and hits none of the triangles"; });
     t.check(t.tried() > 10000, [] { return std::string("too few rays were tried"); });
     t.report();
 }
@@ -315,13 +324,18 @@ TEST_CASE("triangle: rays from inside a closed octahedron mesh never escape thro
                                              {ny, nx}, {ny, nz}, {px, pz}, {pz, nx}, {nx, nz}, {nz, px}};
     tally t("rays from inside a closed octahedron (none of its faces hit)");
     sampler random(26);
+    std::vector<ray> rays;
+    std::vector<point> targets;
     for (int k = 0; k < 20000; ++k) {
         const point from = centre + 0.3 * vector(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
         const auto& [p, q] = edges[k % 12];
         const point target = k % 5 == 0 ? corner[k % 6] : p + random.uniform(0, 1) * (q - p);
-        const ray r = ray_through(from, target);
-        t.check(mesh_hit(solid, r), [&] { return show(r) + " aimed at " + show(target) + " escapes through the mesh"; });
+        rays.push_back(ray_through(from, target));
+        targets.push_back(target);
     }
+    const std::vector<bool> hit = mesh_hits(solid, rays);
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        t.check(hit[k], [&] { return show(rays[k]) + " aimed at " + show(targets[k]) + " escapes through the mesh"; });
     t.report();
 }
 
@@ -345,6 +359,8 @@ TEST_CASE("triangle: a bumpy grid mesh lets no ray through its shared edges and 
         }
     tally t("rays through the grid's shared edges and vertices (none of its triangles hit)");
     sampler random(27);
+    std::vector<ray> rays;
+    std::vector<point> targets;
     for (int k = 0; k < 20000; ++k) {
         const int i = 1 + static_cast<int>(random.uniform(0, n - 2)), j = 1 + static_cast<int>(random.uniform(0, n - 2));
         point target;
@@ -360,9 +376,12 @@ TEST_CASE("triangle: a bumpy grid mesh lets no ray through its shared edges and 
         }
         }
         const vector d = vector(random.uniform(-0.6, 0.6), 1, random.uniform(-0.6, 0.6)) * (k % 2 == 0 ? 1 : -1);
-        const ray r = ray_through(target + random.uniform(2, 30) * d.unit(), target);
-        t.check(mesh_hit(surface, r), [&] { return show(r) + " aimed at " + show(target) + " passes through the mesh"; });
+        rays.push_back(ray_through(target + random.uniform(2, 30) * d.unit(), target));
+        targets.push_back(target);
     }
+    const std::vector<bool> hit = mesh_hits(surface, rays);
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        t.check(hit[k], [&] { return show(rays[k]) + " aimed at " + show(targets[k]) + " passes through the mesh"; });
     t.report();
 }
 
