@@ -25,11 +25,18 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${STAGE}: nm failed on the oracle's objects: ${err}")
 endif()
 
+# Only the functions of the stage's namespace (vl::reference_stageNN): a render binds those
+# it leaves out to a stand-in. Anything else the registration took from a piece would be
+# left undefined in the probe's link, which then fails, naming it.
+string(SUBSTRING ${STAGE} 0 2 number)
 set(needed)
 string(REPLACE "\n" ";" lines "${undefined}")
 foreach(line IN LISTS lines)
   if(line MATCHES "^([^ :]+) [Uwv]")
-    list(APPEND needed ${CMAKE_MATCH_1})
+    set(symbol ${CMAKE_MATCH_1})
+    if(symbol MATCHES "reference_stage${number}")
+      list(APPEND needed ${symbol})
+    endif()
   endif()
 endforeach()
 

@@ -217,10 +217,12 @@ int run(int argc, char** argv) {
                     if (s.name == symbol && s.global()) return &o;
         return nullptr;
     };
+    // Only functions of the stage's namespace are bound to the stand-in in a render; any
+    // other that the registration took from a piece would leave the probe's link undefined.
     for (object_file& o : objects)
         if (o.registration)
             for (const nm_symbol& s : o.symbols)
-                if (s.undefined())
+                if (s.undefined() && s.name.find(marker) != std::string::npos)
                     if (object_file* from = defining(s.name)) from->registration_takes.push_back(s.name);
 
     // What the registration itself defines or calls is the contract's (its inline code, the
