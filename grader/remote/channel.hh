@@ -5,7 +5,8 @@
 /// back, and calls back the other way.
 ///
 /// A message is a frame: its kind (call, result, thrown, release), the number of the call
-/// it belongs to, then its body. A call carries an operation number and its arguments;
+/// it belongs to, then its body. A box carries one frame or more, each after its length:
+/// a release awaits no answer and goes with the next frame. A call carries an operation number and its arguments;
 /// the other end answers with a result or with the exception the call threw. While an
 /// end waits for its answer it serves the calls the other end makes meanwhile (a
 /// composite in the subject asking a child that lives in the judge), so calls nest in
@@ -55,7 +56,7 @@ using handler = std::function<void(message_reader& args, message_writer& result)
 struct alignas(64) shared_box {
     std::atomic<std::uint32_t> written{0};   ///< frames written; changes once per frame
     std::atomic<std::uint32_t> sleeping{0};  ///< the reader sleeps (wake it)
-    std::atomic<std::uint32_t> length{0};    ///< the frame's bytes
+    std::atomic<std::uint32_t> length{0};    ///< the bytes of its frames
     std::atomic<std::uint32_t> taken{0};     ///< frames the reader has copied out
     char pad[48];
     char bytes[max_message_bytes];
@@ -100,7 +101,12 @@ private:
 
     /// The next frame; false when the other end has gone.
     bool receive(frame& f);
+    /// Sends what is queued and this frame, in one box.
     void send(kind k, std::uint64_t number, const std::vector<char>& body);
+    /// Adds a frame to what the next send() puts in the box.
+    void queue(kind k, std::uint64_t number, const std::vector<char>& body);
+    /// Puts what is queued in the box.
+    void flush();
     void serve_call(frame& f);
     [[noreturn]] void broken(const std::string& why);
     /// Waits until the incoming box holds a frame not yet read; false when the other end
@@ -114,7 +120,10 @@ private:
     int socket_;
     shared_box* out_;
     shared_box* in_;
-    std::uint32_t read_ = 0;  ///< frames read from the incoming box
+    std::uint32_t read_ = 0;      ///< boxes read from the incoming side
+    std::vector<char> arrived_;   ///< the last box read, copied out: frames, each after its length
+    std::size_t arrived_at_ = 0;  ///< how far they have been read
+    std::vector<char> queued_;    ///< frames to go with the next one sent
     std::vector<handler> handlers_;
     std::string peer_;
     std::uint64_t next_call_ = 0;
