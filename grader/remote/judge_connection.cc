@@ -49,6 +49,23 @@ int control_fd() {
 
 }  // namespace
 
+namespace {
+
+/// Ends the calling thread's connection when the thread ends, so that the subject's thread
+/// serving it ends too (a test that starts threads by the dozen leaves none behind). The
+/// endpoint itself stays: nothing of the ended thread calls it again.
+struct connection_of_thread {
+    int socket = -1;
+    void* shared = nullptr;
+    ~connection_of_thread() {
+        if (socket >= 0) shutdown(socket, SHUT_RDWR);
+        if (shared != nullptr) munmap(shared, shared_bytes);
+    }
+};
+thread_local connection_of_thread this_thread_connection;
+
+}  // namespace
+
 endpoint& subject() {
     // One connection per thread of the judge, served by a thread of its own in the
     // subject: calls a test makes from several threads run there at once, as they would
@@ -74,6 +91,8 @@ endpoint& subject() {
             }
         }
         mine = new endpoint(ends[0], shared, true, std::vector<handler>{}, "your code's process");
+        this_thread_connection.socket = ends[0];
+        this_thread_connection.shared = shared;
         // Kept where a leak checker sees it after the thread has gone.
         static std::vector<const endpoint*>* const every = new std::vector<const endpoint*>();
         const std::lock_guard<std::mutex> lock(handing_over);

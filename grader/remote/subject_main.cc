@@ -2,10 +2,12 @@
 // connection (one per thread of the judge that calls) and serve it on a thread of its
 // own, until the judge closes the control connection and every connection has ended.
 // Exit 0 then; 3 when the judge's messages made no sense.
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <iostream>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -24,17 +26,28 @@ int main() {
             std::cerr << "subject: cannot map a connection's memory\n";
             return 3;
         }
-        served.emplace_back([c, shared, &handlers, &broken] {
-            endpoint judge(c.socket, shared, false, handlers, "the judge");
-            judge.on_release = release_object;
-            try {
-                judge.serve();
-            } catch (const protocol_error& e) {
-                std::cerr << "subject: " << e.what() << "\n";
-                broken = true;
-            }
+        try {
+            served.emplace_back([c, shared, &handlers, &broken] {
+                {
+                    endpoint judge(c.socket, shared, false, handlers, "the judge");
+                    judge.on_release = release_object;
+                    try {
+                        judge.serve();
+                    } catch (const protocol_error& e) {
+                        std::cerr << "subject: " << e.what() << "\n";
+                        broken = true;
+                    }
+                }
+                munmap(shared, shared_bytes);
+                close(c.socket);
+            });
+        } catch (const std::system_error& e) {
+            // No thread to serve it (the sandbox's limit on threads): the judge's call on
+            // this connection finds the subject gone, and its check fails saying so.
+            std::cerr << "subject: cannot start a thread to serve a connection: " << e.what() << "\n";
+            munmap(shared, shared_bytes);
             close(c.socket);
-        });
+        }
     }
     for (std::thread& t : served) t.join();
     return broken ? 3 : 0;
