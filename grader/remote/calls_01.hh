@@ -22,6 +22,7 @@ enum op : op_id {
     make_sampler,       ///< string -> handle of a sampler (0: nullptr)
     primary_ray,        ///< camera handle, double x, double y -> ray
     offsets,            ///< sampler handle, the span's values (vector of sample_offset), seed -> the span's values
+    offsets_each,       ///< sampler handle, the span's first values, vector of seeds -> the span's values for each seed
 };
 
 /// The most offsets one call to a sampler crosses with (the tests ask for at most a few

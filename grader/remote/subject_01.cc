@@ -63,6 +63,21 @@ std::vector<handler> subject_handlers() {
         samplers.at(pattern).offsets(values, seed);
         out.put_vector(values);
     };
+    h[c::offsets_each] = [](message_reader& in, message_writer& out) {
+        const auto pattern = in.get<handle>();
+        const std::vector<sample_offset> fill = in.get_vector<sample_offset>(c::max_offsets);
+        const std::vector<std::uint64_t> seeds = in.get_vector<std::uint64_t>(c::max_offsets);
+        in.finish();
+        if (fill.size() * seeds.size() > c::max_offsets) throw protocol_error("a batch of offsets too large");
+        std::vector<sample_offset> values;
+        values.reserve(fill.size() * seeds.size());
+        for (const std::uint64_t seed : seeds) {
+            std::vector<sample_offset> one = fill;
+            samplers.at(pattern).offsets(one, seed);
+            values.insert(values.end(), one.begin(), one.end());
+        }
+        out.put_vector(values);
+    };
     return h;
 }
 

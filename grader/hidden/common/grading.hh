@@ -22,7 +22,9 @@
 
 #include "vl/catch.hh"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <initializer_list>
 #include <span>
@@ -32,6 +34,7 @@
 
 #include "01-tuples/tests/test_support.hh"
 #include "vl/error.hh"
+#include "vl/camera.hh"
 #include "vl/ray.hh"
 #include "vl/rt_base_objects.hh"
 #include "vl/tuples_based.hh"
@@ -99,6 +102,38 @@ inline std::vector<intersection> intersect_all(std::span<const rtab_component* c
         return out;
     for (std::size_t k = 0; k < rays.size(); ++k)
         for (std::size_t j = 0; j < objects.size(); ++j) out[k * objects.size() + j] = objects[j]->intersect(rays[k]);
+    return out;
+}
+///@}
+
+/// \name Many seeds of one sample pattern at once
+/// As intersect_all, for a test that asks a pattern for thousands of seeds.
+///@{
+/// Fills `out[k * fill.size() + i]` with offset i of `pattern` for `seeds[k]`, each run
+/// starting from the values of `fill`; false when it cannot (the pattern is no stand-in).
+using offsets_batch = bool (*)(const sampler& pattern, std::span<const sample_offset> fill,
+                               std::span<const std::uint64_t> seeds, std::span<sample_offset> out);
+/// The judge's way of asking a batch (set when the judge starts); none in one process.
+inline offsets_batch& batch_of_offsets() {
+    static offsets_batch batch = nullptr;
+    return batch;
+}
+/// What `pattern.offsets(span, seed)` leaves in a span of `fill.size()` offsets that held
+/// `fill`, for each seed of `seeds`, in order.
+inline std::vector<std::vector<sample_offset>> offsets_for_seeds(const sampler& pattern,
+                                                                 std::span<const sample_offset> fill,
+                                                                 std::span<const std::uint64_t> seeds) {
+    const std::size_t n = fill.size();
+    std::vector<sample_offset> flat(n * seeds.size());
+    if (const offsets_batch batch = batch_of_offsets(); batch == nullptr || !batch(pattern, fill, seeds, flat))
+        for (std::size_t k = 0; k < seeds.size(); ++k) {
+            const std::span<sample_offset> one(flat.data() + k * n, n);
+            std::copy(fill.begin(), fill.end(), one.begin());
+            pattern.offsets(one, seeds[k]);
+        }
+    std::vector<std::vector<sample_offset>> out;
+    out.reserve(seeds.size());
+    for (std::size_t k = 0; k < seeds.size(); ++k) out.emplace_back(flat.begin() + k * n, flat.begin() + (k + 1) * n);
     return out;
 }
 ///@}

@@ -47,6 +47,19 @@ std::vector<sample_offset> draw(const sampler& pattern, std::size_t n, std::uint
     return out;
 }
 
+/// draw() for each of `seeds`, asked all at once (vl::grading::offsets_for_seeds).
+std::vector<std::vector<sample_offset>> draws(const sampler& pattern, std::size_t n, const std::vector<std::uint64_t>& seeds) {
+    const std::vector<sample_offset> fill(n, sample_offset{-1, -1});
+    return vl::grading::offsets_for_seeds(pattern, fill, seeds);
+}
+
+/// mixed_seed(0), ..., mixed_seed(count - 1).
+std::vector<std::uint64_t> mixed_seeds(int count) {
+    std::vector<std::uint64_t> seeds;
+    for (int j = 0; j < count; ++j) seeds.push_back(mixed_seed(static_cast<std::uint64_t>(j)));
+    return seeds;
+}
+
 std::unique_ptr<sampler> require_sampler(const char* name) {
     auto s = make_sampler(name);
     VL_REQUIRE(s != nullptr, "make_sampler(\"" << name << "\") should return a sampler; yours returned nullptr");
@@ -216,8 +229,9 @@ TEST_CASE("samplers: jittered samples are spread uniformly over their cells", "[
         std::vector<int> bins(64, 0);
         double sum_x = 0, sum_y = 0;
         int count = 0;
+        const auto all = draws(*pattern, n, mixed_seeds(2000));
         for (int j = 0; j < 2000; ++j) {
-            const auto out = draw(*pattern, n, mixed_seed(static_cast<std::uint64_t>(j)));
+            const auto& out = all[static_cast<std::size_t>(j)];
             for (std::size_t i = 0; i < n; ++i) {
                 const auto [cx, cy] = in_cell(out[i], i, k);
                 const int bx = std::clamp(static_cast<int>(cx * 8), 0, 7), by = std::clamp(static_cast<int>(cy * 8), 0, 7);
@@ -249,8 +263,9 @@ TEST_CASE("samplers: jittered positions within the cells are independent across 
     constexpr int seeds = 1500;
     std::vector<std::vector<double>> xs(n), ys(n);
     int all_alike = 0;
+    const auto all = draws(*pattern, n, mixed_seeds(seeds));
     for (int j = 0; j < seeds; ++j) {
-        const auto out = draw(*pattern, n, mixed_seed(static_cast<std::uint64_t>(j)));
+        const auto& out = all[static_cast<std::size_t>(j)];
         bool alike = true;
         const auto first = in_cell(out[0], 0, k);
         for (std::size_t i = 0; i < n; ++i) {
@@ -310,9 +325,12 @@ TEST_CASE("samplers: different seeds give different jittered and random offsets"
             std::set<std::pair<double, double>> seen;
             int repeats = 0;
             std::string example;
+            std::vector<std::uint64_t> numbered;
+            for (int j = 0; j < 1000; ++j) numbered.push_back(seed_number(j));
+            const auto all = draws(*pattern, n, numbered);
             for (int j = 0; j < 1000; ++j) {
-                const std::uint64_t seed = seed_number(j);
-                const auto out = draw(*pattern, n, seed);
+                const std::uint64_t seed = numbered[static_cast<std::size_t>(j)];
+                const auto& out = all[static_cast<std::size_t>(j)];
                 if (!seen.insert({out[0].dx, out[0].dy}).second) {
                     ++repeats;
                     if (example.empty())
@@ -421,8 +439,9 @@ TEST_CASE("samplers: random offsets cover the pixel uniformly", "[01][samplers][
     for (std::size_t n : {1u, 16u}) {
         std::vector<int> bins(64, 0), columns(16, 0), rows(16, 0);
         const int seeds = n == 1 ? 20000 : 2000;
+        const auto all = draws(*pattern, n, mixed_seeds(seeds));
         for (int j = 0; j < seeds; ++j) {
-            const auto out = draw(*pattern, n, mixed_seed(static_cast<std::uint64_t>(j)));
+            const auto& out = all[static_cast<std::size_t>(j)];
             for (const sample_offset& o : out) {
                 const int bx = std::clamp(static_cast<int>(o.dx * 8), 0, 7), by = std::clamp(static_cast<int>(o.dy * 8), 0, 7);
                 ++bins[static_cast<std::size_t>(by * 8 + bx)];
