@@ -79,13 +79,20 @@ bool endpoint::wait_for_frame() {
         sched_yield();  // the other end may be waiting for this core
     }
     for (;;) {
+        if (in_->closed.load() != 0) return false;
         in_->sleeping.store(1);
         const std::uint32_t seen = in_->written.load();
         if (seen == read_) futex_wait(in_->written, seen);
         in_->sleeping.store(0);
         if (in_->written.load(std::memory_order_acquire) != read_) return true;
-        if (!peer_there()) return false;
+        if (in_->closed.load() != 0 || !peer_there()) return false;
     }
+}
+
+void endpoint::close() noexcept {
+    out_->closed.store(1);
+    out_->written.fetch_add(0);  // a full fence before the wake
+    futex_wake(out_->written);
 }
 
 void endpoint::wait_until_taken() {

@@ -58,7 +58,8 @@ struct alignas(64) shared_box {
     std::atomic<std::uint32_t> sleeping{0};  ///< the reader sleeps (wake it)
     std::atomic<std::uint32_t> length{0};    ///< the bytes of its frames
     std::atomic<std::uint32_t> taken{0};     ///< frames the reader has copied out
-    char pad[48];
+    std::atomic<std::uint32_t> closed{0};    ///< the writer has gone for good
+    char pad[44];
     char bytes[max_message_bytes];
 };
 
@@ -87,6 +88,10 @@ public:
     /// Serves calls until the other end goes (returns), or breaks the protocol (throws
     /// protocol_error). The subject's main loop.
     void serve();
+
+    /// Tells the other end that this end is gone (it wakes if it sleeps); nothing is sent
+    /// after. Never throws.
+    void close() noexcept;
 
     /// Called for each release that arrives.
     std::function<void(handle)> on_release;

@@ -55,9 +55,11 @@ namespace {
 /// serving it ends too (a test that starts threads by the dozen leaves none behind). The
 /// endpoint itself stays: nothing of the ended thread calls it again.
 struct connection_of_thread {
+    endpoint* end = nullptr;
     int socket = -1;
     void* shared = nullptr;
     ~connection_of_thread() {
+        if (end != nullptr) end->close();
         if (socket >= 0) shutdown(socket, SHUT_RDWR);
         if (shared != nullptr) munmap(shared, shared_bytes);
     }
@@ -91,6 +93,7 @@ endpoint& subject() {
             }
         }
         mine = new endpoint(ends[0], shared, true, std::vector<handler>{}, "your code's process");
+        this_thread_connection.end = mine;
         this_thread_connection.socket = ends[0];
         this_thread_connection.shared = shared;
         // Kept where a leak checker sees it after the thread has gone.

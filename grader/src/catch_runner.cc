@@ -258,6 +258,9 @@ test_outcome run_judged_test_case(const fs::path& judge, const fs::path& subject
     sq.argv = {"/vl/bin/subject"};
     sq.environment = child_environment("/scratch");
     sq.limits = limits;
+    // A thread of the subject serves each thread of the judge that calls, beside the
+    // threads of the student's own code.
+    sq.limits.processes = 2 * limits.processes;
     sq.channel = ends[1];
     // The judge: the test, its expected values and its verdict, in a sandbox of its own.
     run_request jq = test_request(judge, "/vl/bin/judge", expected.name, limits);
