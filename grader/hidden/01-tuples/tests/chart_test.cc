@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -86,12 +87,16 @@ TEST_CASE("chart: samplers: LDR-FLIP against the converged picture as samples pe
             WARN(std::string(name) << " left out of the chart: make_sampler returned nullptr");
             continue;
         }
+        // Every pixel's seed, asked of the pattern at once (vl::grading::offsets_for_seeds).
+        std::vector<std::uint64_t> seeds;
+        for (int j = 0; j < height; ++j)
+            for (int i = 0; i < width; ++i) seeds.push_back(pixel_seed(i, j));
         for (int n = 1; n <= 64; n *= 2) {
-            std::vector<sample_offset> offsets(static_cast<std::size_t>(n));
+            const std::vector<sample_offset> fill(static_cast<std::size_t>(n));
+            const std::vector<std::vector<sample_offset>> offsets = grading::offsets_for_seeds(*pattern, fill, seeds);
             const image test = picture_image([&](int i, int j) {
-                pattern->offsets(offsets, pixel_seed(i, j));
                 rgb sum{0, 0, 0};
-                for (const sample_offset& o : offsets) {
+                for (const sample_offset& o : offsets[static_cast<std::size_t>(j * width + i)]) {
                     const rgb c = picture(i + o.dx, j + o.dy);
                     for (int ch = 0; ch < 3; ++ch) sum[static_cast<std::size_t>(ch)] += c[static_cast<std::size_t>(ch)];
                 }
