@@ -1,5 +1,6 @@
 #include "judge_connection.hh"
 
+#include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -79,8 +80,13 @@ endpoint& subject() {
         int ends[2];
         if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
             throw protocol_error(std::string("socketpair: ") + std::strerror(errno));
-        const int memory = memfd_create("vl-connection", MFD_CLOEXEC);
-        void* shared = memory >= 0 && ftruncate(memory, static_cast<off_t>(shared_bytes)) == 0 ? map_shared(memory) : nullptr;
+        // Sealed at its size before the subject gets it: a subject that could shrink it would
+        // make the judge's next read of a box fault (SIGBUS).
+        const int memory = memfd_create("vl-connection", MFD_CLOEXEC | MFD_ALLOW_SEALING);
+        void* shared = memory >= 0 && ftruncate(memory, static_cast<off_t>(shared_bytes)) == 0 &&
+                               fcntl(memory, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_SEAL) == 0
+                           ? map_shared(memory)
+                           : nullptr;
         if (shared == nullptr) throw protocol_error(std::string("the judge cannot share memory: ") + std::strerror(errno));
         {
             const std::lock_guard<std::mutex> lock(handing_over);
