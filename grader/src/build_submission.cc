@@ -143,7 +143,8 @@ void check_render_links(const installation& in, const fs::path& bin, const std::
     const run_result r = run(rq, caps);
     if (!r.started || !r.succeeded() || r.output_bytes > r.output.size())
         throw grader_error("nm could not list the render programs' symbols: " + (r.started ? r.output_head(300) : r.error));
-    // "FILE: NAME TYPE VALUE SIZE", mangled names without spaces.
+    // "FILE: NAME TYPE VALUE SIZE", mangled names without spaces. FILE is the program's path
+    // inside the sandbox, or on the host in the weaker sandbox: its name tells them apart.
     std::map<std::string, std::map<std::string, std::string>> values;
     std::istringstream lines(r.output);
     for (std::string line; std::getline(lines, line);) {
@@ -151,10 +152,11 @@ void check_render_links(const installation& in, const fs::path& bin, const std::
         if (colon == std::string::npos) continue;
         std::istringstream rest(line.substr(colon + 2));
         std::string symbol, type, value;
-        if (rest >> symbol >> type >> value) values[line.substr(0, colon)][symbol] = value;
+        if (rest >> symbol >> type >> value) values[fs::path(line.substr(0, colon)).filename().string()][symbol] = value;
     }
     for (std::size_t k = 0; k < plans.size(); ++k) {
-        const std::map<std::string, std::string>& defined = values["/in/" + name(k)];
+        const std::map<std::string, std::string>& defined = values[name(k)];
+        if (defined.empty()) throw grader_error("nm listed no symbol of the render program " + name(k));
         const auto trap = defined.find("vl_grader_withheld_reference");
         std::vector<std::string> wrong;
         for (const std::string& s : plans[k].forbidden)
