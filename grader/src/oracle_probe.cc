@@ -17,7 +17,8 @@
 //     (bounding_sphere.hh: the fractal spheres are bounding spheres), since that header's
 //     code is compiled into both;
 //   - defines a symbol of the stage's namespace that a left-out object defines too (an
-//     inline function or a template of the reference, a weak copy in each object);
+//     inline function or a template of the reference, a weak copy in each object), unless
+//     the registration defines or calls it as well (then it is the contract's);
 //   - calls a function of the stage's namespace that only left-out objects define.
 // The registration objects are never left out: the functions they take from left-out
 // objects are bound at the render's link to vl_grader_withheld_reference (graded_pieces.cc).
