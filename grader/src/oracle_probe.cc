@@ -26,8 +26,9 @@
 // FILE.json holds, per object, its source, the functions the registration takes from it
 // and every symbol of the stage's namespace it defines (the grader checks that a render
 // defines none of a left-out object's), and per piece its factory and the objects a render
-// that grades it leaves out, each with the reason. Any piece whose factory ends otherwise
-// than in a trap, or a registration that would have to be left out, stops the build.
+// that grades it leaves out, each with the reason (none for a piece made without the
+// reference's objects). A factory that throws anything but a trap, or a registration that
+// would have to be left out, stops the build.
 #include <algorithm>
 #include <array>
 #include <cctype>
