@@ -433,8 +433,11 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         }
     }
 
-    // 3. Link, seeing only objects.
-    auto link = [&](const std::string& program, const std::vector<prebuilt_part>& first, bool with_catch) {
+    // 3. Link, seeing only objects: `first`, the student's objects, `then` (with the
+    // symbols `withheld` bound to vl_grader_withheld_reference), and the group.
+    auto run_link = [&](const std::string& program, const std::vector<prebuilt_part>& first,
+                        const std::vector<prebuilt_part>& then, const std::vector<std::string>& withheld,
+                        bool with_catch, double& timeout) {
         run_request rq;
         rq.mounts = {{objects, "/in", false}, {bin, "/out", true}};
         std::vector<std::string> argv = {in.cxx_compiler.string()};
@@ -450,6 +453,8 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         };
         for (const prebuilt_part& p : first) add(p);
         for (const std::string& f : sub.files) argv.push_back("/in/" + stem_of(f) + ".o");
+        for (const prebuilt_part& p : then) add(p);
+        for (const std::string& symbol : withheld) argv.push_back("-Wl,--defsym=" + symbol + "=vl_grader_withheld_reference");
         argv.push_back("-Wl,--start-group");
         if (with_catch) add(catch_main);
         for (const prebuilt_part& p : group) add(p);
@@ -462,10 +467,15 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         rq.limits.file_bytes = std::uint64_t{1} << 30;
         rq.limits.scratch_bytes = std::uint64_t{256} << 20;
         rq.limits.processes = 16;
-        const run_result r = run(rq, caps);
+        timeout = rq.limits.wall_seconds;
+        return run(rq, caps);
+    };
+    auto link = [&](const std::string& program, const std::vector<prebuilt_part>& first, bool with_catch) {
+        double timeout = 0;
+        const run_result r = run_link(program, first, {}, {}, with_catch, timeout);
         if (!r.started) throw grader_error("the sandbox could not run the linker: " + r.error);
         if (!r.succeeded())
-            b.errors += r.timed_out ? "linking " + r.describe(rq.limits.wall_seconds) + "\n" : explain_link_errors(r.output, sub.files);
+            b.errors += r.timed_out ? "linking " + r.describe(timeout) + "\n" : explain_link_errors(r.output, sub.files);
         return r.succeeded() && is_regular(bin / program);
     };
     // The render programs (render-0, render-1, ...): the renderer, the student's objects, the
@@ -473,36 +483,13 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     // vl_grader_withheld_reference. Two links at a time.
     auto render_name = [](std::size_t k) { return "render-" + std::to_string(k); };
     auto link_render = [&](std::size_t k, std::string& errors) {
-        run_request rq;
-        rq.mounts = {{objects, "/in", false}, {bin, "/out", true}};
-        std::vector<std::string> argv = {in.cxx_compiler.string()};
-        argv.insert(argv.end(), in.link_flags.begin(), in.link_flags.end());
-        if (!in.sanitized) argv.push_back("-Wl,--strip-debug");  // as the test program's link
-        argv.insert(argv.end(), {"-pthread", "-o", "/out/" + render_name(k)});
-        auto add = [&](const prebuilt_part& p) {
-            rq.mounts.push_back({p.host, p.inside, false});
-            argv.push_back(p.inside);
-        };
-        for (const prebuilt_part& p : renderer) add(p);
-        for (const std::string& f : sub.files) argv.push_back("/in/" + stem_of(f) + ".o");
-        for (const fs::path& o : plans[k].objects) add(oracle_parts.at(o));
-        for (const std::string& symbol : plans[k].traps)
-            argv.push_back("-Wl,--defsym=" + symbol + "=vl_grader_withheld_reference");
-        argv.push_back("-Wl,--start-group");
-        for (const prebuilt_part& p : group) add(p);
-        argv.push_back("-Wl,--end-group");
-        argv.insert(argv.end(), in.system_libraries.begin(), in.system_libraries.end());
-        rq.argv = argv;
-        rq.environment = child_environment("/scratch");
-        rq.limits.wall_seconds = std::max(1.0, std::min(120.0, left()));
-        rq.limits.memory_bytes = std::uint64_t{4} << 30;
-        rq.limits.file_bytes = std::uint64_t{1} << 30;
-        rq.limits.scratch_bytes = std::uint64_t{256} << 20;
-        rq.limits.processes = 16;
-        const run_result r = run(rq, caps);
+        std::vector<prebuilt_part> withheld_from;
+        for (const fs::path& o : plans[k].objects) withheld_from.push_back(oracle_parts.at(o));
+        double timeout = 0;
+        const run_result r = run_link(render_name(k), renderer, withheld_from, plans[k].traps, false, timeout);
         if (!r.started) return std::string("the sandbox could not run the linker: ") + r.error;
         if (!r.succeeded())
-            errors = r.timed_out ? "linking " + r.describe(rq.limits.wall_seconds) + "\n" : explain_link_errors(r.output, sub.files);
+            errors = r.timed_out ? "linking " + r.describe(timeout) + "\n" : explain_link_errors(r.output, sub.files);
         else if (!is_regular(bin / render_name(k)))
             errors = "linking made no program\n";
         return std::string();

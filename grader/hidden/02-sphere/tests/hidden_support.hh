@@ -61,6 +61,20 @@ inline bool clean_hit(const intersection& i, const rtab_component* object) {
     return i.object == object && std::isfinite(i.t) && i.t > 0;
 }
 
+/// For each of `rays`, whether it hits at least one of `objects` cleanly; all the rays are
+/// asked at once (vl::grading::intersect_all), so a watertightness test of thousands of
+/// rays crosses to the student's process a few times, not once per ray and face.
+template <class Owned>
+std::vector<bool> hits_any(const std::vector<Owned>& objects, const std::vector<ray>& rays) {
+    std::vector<const rtab_component*> asked;
+    for (const auto& o : objects) asked.push_back(o.get());
+    const std::vector<intersection> hits = vl::grading::intersect_all(asked, rays);
+    std::vector<bool> hit(rays.size(), false);
+    for (std::size_t k = 0; k < rays.size(); ++k)
+        for (std::size_t j = 0; j < asked.size(); ++j) hit[k] = clean_hit(hits[k * asked.size() + j], asked[j]) || hit[k];
+    return hit;
+}
+
 /// A primitive's answer is intersection::none(): no object, no distance.
 inline bool clean_miss(const intersection& i) { return i.object == nullptr && i.t == 0; }
 

@@ -113,18 +113,6 @@ void check_ray(tally& t, const primitive& poly, const shape& v, const ray& r, do
     }
 }
 
-/// For each of `rays`, whether it hits at least one of `faces` cleanly; all the rays are
-/// asked at once (vl::grading::intersect_all).
-std::vector<bool> any_hits(const std::vector<std::unique_ptr<primitive>>& faces, const std::vector<ray>& rays) {
-    std::vector<const rtab_component*> objects;
-    for (const auto& f : faces) objects.push_back(f.get());
-    const std::vector<intersection> hits = vl::grading::intersect_all(objects, rays);
-    std::vector<bool> hit(rays.size(), false);
-    for (std::size_t k = 0; k < rays.size(); ++k)
-        for (std::size_t j = 0; j < faces.size(); ++j) hit[k] = clean_hit(hits[k * faces.size() + j], faces[j].get()) || hit[k];
-    return hit;
-}
-
 // `got` answers like `want`, the same polygon made another way.
 void check_same_polygon(tally& t, const rtab_component& got, const primitive& want, const shape& v, const std::string& who) {
     t.check(got.type_name() == "POLYGON", [&] { return who + "'s type_name() is \"" + got.type_name() + "\", not \"POLYGON\""; });
@@ -332,7 +320,7 @@ TEST_CASE("polygon: rays from inside a box of six rectangular faces never escape
         rays.push_back(ray_through(from, target));
         targets.push_back(target);
     }
-    const std::vector<bool> hit = any_hits(faces, rays);
+    const std::vector<bool> hit = hits_any(faces, rays);
     for (std::size_t k = 0; k < rays.size(); ++k)
         t.check(hit[k], [&] { return show(rays[k]) + " aimed at " + show(targets[k]) + " escapes through the box"; });
     t.report();
@@ -360,7 +348,7 @@ TEST_CASE("polygon: rays through the shared edges and the hub of a ring of quadr
         rays.push_back(ray_through(target + random.uniform(1, 30) * d.unit(), target));
         targets.push_back(target);
     }
-    const std::vector<bool> hit = any_hits(ring, rays);
+    const std::vector<bool> hit = hits_any(ring, rays);
     for (std::size_t k = 0; k < rays.size(); ++k)
         t.check(hit[k], [&] { return show(rays[k]) + " aimed at " + show(targets[k]) + " slips through the ring"; });
     t.report();

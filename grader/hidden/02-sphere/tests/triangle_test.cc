@@ -75,17 +75,8 @@ const std::vector<corners> triangles = {
     {point(-3, 1, 1), point(4, 1, 1.5), point(0.5, 1, -6)},  // nearly horizontal
 };
 
-/// For each of `rays`, whether it hits at least one triangle of `m` cleanly; all the rays
-/// are asked at once (vl::grading::intersect_all).
-std::vector<bool> mesh_hits(const mesh& m, const std::vector<ray>& rays) {
-    std::vector<const rtab_component*> faces_of_mesh;
-    for (const auto& t : m) faces_of_mesh.push_back(t.get());
-    const std::vector<intersection> hits = vl::grading::intersect_all(faces_of_mesh, rays);
-    std::vector<bool> hit(rays.size(), false);
-    for (std::size_t k = 0; k < rays.size(); ++k)
-        for (std::size_t j = 0; j < m.size(); ++j) hit[k] = clean_hit(hits[k * m.size() + j], m[j].get()) || hit[k];
-    return hit;
-}
+/// For each of `rays`, whether it hits at least one triangle of `m` cleanly.
+std::vector<bool> mesh_hits(const mesh& m, const std::vector<ray>& rays) { return hits_any(m, rays); }
 bool mesh_hit(const mesh& m, const ray& r) { return mesh_hits(m, {r})[0]; }
 
 // `got` answers like `want`, the same triangle made another way.
