@@ -35,14 +35,23 @@ std::string number(double x) {
     return s == "-0" ? "0" : s;
 }
 
-/// One CSV cell (RFC 4180), safe to open in a spreadsheet: a text starting with = + - @
-/// or a tab would be run as a formula there, so it gets a leading apostrophe.
-std::string cell(std::string s, bool is_text = true) {
-    if (is_text && !s.empty() && (s[0] == '=' || s[0] == '+' || s[0] == '-' || s[0] == '@' || s[0] == '\t' || s[0] == '\r'))
-        s = "'" + s;
-    if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+/// Whether a spreadsheet would read a field starting with `c` as a formula (or, for a
+/// tab or a carriage return, strip what hides one).
+bool starts_formula(char c) { return c == '=' || c == '+' || c == '-' || c == '@' || c == '\t' || c == '\r'; }
+
+/// One text cell of a CSV (RFC 4180), safe in any spreadsheet and any locale: always in
+/// double quotes (so a reader that separates with `;`, a tab or `|` still sees one
+/// field), quotes doubled, and an apostrophe before every place a field could start with
+/// a formula: the cell's start and, for readers that ignore the quotes, after every
+/// separator any locale uses (`,` `;` tab `|` line break), spaces skipped.
+std::string cell(const std::string& s) {
     std::string q = "\"";
-    for (const char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    bool field_start = true;
+    for (const char c : s) {
+        if (field_start && starts_formula(c)) q += '\'';
+        if (c != ' ') field_start = c == ',' || c == ';' || c == '\t' || c == '|' || c == '\n' || c == '\r';
+        q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    }
     return q + "\"";
 }
 
@@ -192,6 +201,7 @@ std::string roster_csv(const std::vector<roster_record>& records, const std::vec
     head.insert(head.end(), categories.begin(), categories.end());
     for (const char* h : {"passed", "failed", "crashed", "timed_out", "refused", "not_run", "hash", "report", "message"})
         head.push_back(h);
+    for (std::string& h : head) h = cell(h);
     std::string csv = row(head);
     std::vector<std::pair<std::string, std::vector<std::string>>> lines;
     for (const roster_record& r : records) {
@@ -216,9 +226,9 @@ std::string roster_csv(const std::vector<roster_record>& records, const std::vec
         lines.emplace_back(r.student, cells);
     }
     for (const std::string& name : missing) {
-        std::vector<std::string> cells = {cell(name), "not graded"};
+        std::vector<std::string> cells = {cell(name), cell("not graded")};
         cells.resize(head.size());
-        cells.back() = "no grade yet: grade it with the roster again";
+        cells.back() = cell("no grade yet: grade it with the roster again");
         lines.emplace_back(name, cells);
     }
     std::sort(lines.begin(), lines.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -262,10 +272,10 @@ std::string leaderboard_csv(const std::vector<roster_record>& records) {
         return a.r->student < b.r->student;
     };
     std::sort(entries.begin(), entries.end(), better);
-    std::vector<std::string> head = {"rank", "student"};
+    std::vector<std::string> head = {cell("rank"), cell("student")};
     for (std::size_t k = 0; k < names.size(); ++k)
         head.push_back(cell(names[k] + (orders[k] == "asc" ? " (lower is better)" : " (higher is better)")));
-    head.push_back("score");
+    head.push_back(cell("score"));
     std::string csv = row(head);
     int rank = 0;
     for (std::size_t k = 0; k < entries.size(); ++k) {

@@ -53,11 +53,14 @@ TEST_CASE("roster csv: one row per student by name, categories in rubric order, 
     const std::string csv = roster_csv({graded("bob", 50), graded("alice", 100)}, {"carol"});
     const auto l = lines(csv);
     REQUIRE(l.size() == 4);
-    CHECK(l[0] == "student,verdict,score,max_score,percent,sphere,planes,passed,failed,crashed,timed_out,refused,not_run,"
-                  "hash,report,message");
-    CHECK(l[1] == "alice,graded,100,100,100,60,40,10,0,0,0,0,0,00000000000000aa,grades/alice-00000000000000aa/report.html,");
-    CHECK(l[2] == "bob,graded,50,100,50,30,20,10,0,0,0,0,0,00000000000000aa,grades/bob-00000000000000aa/report.html,");
-    CHECK(l[3].starts_with("carol,not graded,,,,,,,,,,,,,,"));
+    CHECK(l[0] == R"c("student","verdict","score","max_score","percent","sphere","planes","passed","failed","crashed",)c"
+                  R"c("timed_out","refused","not_run","hash","report","message")c");
+    CHECK(l[1] == R"c("alice","graded",100,100,100,60,40,10,0,0,0,0,0,"00000000000000aa",)c"
+                  R"c("grades/alice-00000000000000aa/report.html","")c");
+    CHECK(l[2] == R"c("bob","graded",50,100,50,30,20,10,0,0,0,0,0,"00000000000000aa",)c"
+                  R"c("grades/bob-00000000000000aa/report.html","")c");
+    CHECK(l[3].starts_with(R"c("carol","not graded",,,,,,,,,,,,,,)c"));
+    CHECK(l[3].ends_with(R"c("no grade yet: grade it with the roster again")c"));
 }
 
 TEST_CASE("roster csv: a grader error has no score, and its message is there") {
@@ -68,17 +71,53 @@ TEST_CASE("roster csv: a grader error has no score, and its message is there") {
     r.message = "the grader failed: bubblewrap cannot run";
     const auto l = lines(roster_csv({r}, {}));
     REQUIRE(l.size() == 2);
-    CHECK(l[1] == "dan,grader error,,,,,,,,,,1,,the grader failed: bubblewrap cannot run");
+    CHECK(l[1] == R"c("dan","grader error",,,,,,,,,,"1",,"the grader failed: bubblewrap cannot run")c");
 }
 
 TEST_CASE("roster csv: commas, quotes and line breaks are quoted, and a formula is made text") {
     const auto l = lines(roster_csv({graded("o\"neil, jr", 10), graded("=HYPERLINK(\"x\")", 20), graded("-2+3", 30)}, {}));
     REQUIRE(l.size() == 4);
-    CHECK(l[1].starts_with("'-2+3,graded,30,"));  // not the number 1, and not run as a formula
-    CHECK(l[2].starts_with("\"'=HYPERLINK(\"\"x\"\")\",graded,20,"));
-    CHECK(l[3].starts_with("\"o\"\"neil, jr\",graded,10,"));
+    CHECK(l[1].starts_with(R"c("'-2+3","graded",30,)c"));  // not the number 1, and not run as a formula
+    CHECK(l[2].starts_with(R"c("'=HYPERLINK(""x"")","graded",20,)c"));
+    CHECK(l[3].starts_with(R"c("o""neil, jr","graded",10,)c"));
     const auto broken = roster_csv({graded("two\nlines", 1)}, {});
-    CHECK(broken.find("\"two\nlines\",graded") != std::string::npos);
+    CHECK(broken.find("\"two\nlines\",\"graded\"") != std::string::npos);
+}
+
+namespace {
+
+/// The fields a spreadsheet that ignores quotes sees when it splits a line at `sep`.
+std::vector<std::string> naive_fields(const std::string& line, char sep) {
+    std::vector<std::string> out(1);
+    for (const char c : line) {
+        if (c == sep || c == '\n') out.emplace_back();
+        else if (c != '"') out.back() += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("roster csv: no field starts a formula for readers that split at , ; tab or | and ignore the quotes") {
+    // Folder names and messages as a student could choose them.
+    const std::vector<std::string> names = {"a;=1+1",       "x, =cmd|' /C calc'!A0", "t\t@SUM(A1)", "p|+1",
+                                            "q;  -2",       "r\n=HYPERLINK(\"u\")",  "\r=1",       " =1",
+                                            "ok;fine, too"};
+    std::vector<roster_record> records;
+    for (const auto& n : names) {
+        records.push_back(graded(n, 1));
+        records.back().message = n;
+    }
+    const std::string csv = roster_csv(records, {names[0]}) + leaderboard_csv({graded(names[1], 1, {{names[2], "asc", 1}})});
+    for (const char sep : {',', ';', '\t', '|'})
+        for (const std::string& field : naive_fields(csv, sep)) {
+            const auto start = field.find_first_not_of(" \r");
+            INFO("separator '" << sep << "', field [" << field << "]");
+            CHECK((start == std::string::npos || std::string("=+-@").find(field[start]) == std::string::npos));
+        }
+    // What the quotes keep together reads back as written, less the apostrophes.
+    CHECK(csv.find(R"c("a;'=1+1")c") != std::string::npos);
+    CHECK(csv.find(R"c("ok;fine, too")c") != std::string::npos);
 }
 
 TEST_CASE("leaderboard: ascending values rank first, equal values share a rank, no value is last and unranked") {
@@ -88,20 +127,20 @@ TEST_CASE("leaderboard: ascending values rank first, equal values share a rank, 
          graded("ed", 100, value(95))});
     const auto l = lines(csv);
     REQUIRE(l.size() == 6);
-    CHECK(l[0] == "rank,student,BVH tests per ray (lower is better),score");
-    CHECK(l[1] == "1,ben,60,100");
-    CHECK(l[2] == "2,ann,80,90");
-    CHECK(l[3] == "2,cy,80,100");
-    CHECK(l[4] == "4,ed,95,100");
-    CHECK(l[5] == ",di,,40");
+    CHECK(l[0] == R"c("rank","student","BVH tests per ray (lower is better)","score")c");
+    CHECK(l[1] == R"c(1,"ben",60,100)c");
+    CHECK(l[2] == R"c(2,"ann",80,90)c");
+    CHECK(l[3] == R"c(2,"cy",80,100)c");
+    CHECK(l[4] == R"c(4,"ed",95,100)c");
+    CHECK(l[5] == R"c(,"di",,40)c");
 }
 
 TEST_CASE("leaderboard: descending order, and none at all when no grade has a value") {
     const auto value = [](double v) { return std::vector<leaderboard_value>{{"speed", "desc", v}}; };
     const auto l = lines(leaderboard_csv({graded("ann", 1, value(2)), graded("ben", 1, value(3))}));
     REQUIRE(l.size() == 3);
-    CHECK(l[1] == "1,ben,3,1");
-    CHECK(l[2] == "2,ann,2,1");
+    CHECK(l[1] == R"c(1,"ben",3,1)c");
+    CHECK(l[2] == R"c(2,"ann",2,1)c");
     CHECK(leaderboard_csv({graded("ann", 1), graded("ben", 2)}).empty());
 }
 

@@ -151,7 +151,7 @@ grep -q "; 19 already graded and unchanged; grading 1 with" "$tmp/run4b.log" &&
 # A changed submission is graded again, alone: bob breaks his sphere.
 patch --batch --silent -p1 -d "$dir/bob" -i "$cases/inward-normal/bug.patch" || bad "cannot change bob's submission"
 "$grader" roster 02 "$dir" --out "$out" >"$tmp/run6.log" 2>&1 || bad "the rerun after a change failed"
-bob=$(grep '^bob,' "$csv" | cut -d, -f3)
+bob=$(grep '^"bob",' "$csv" | cut -d, -f3)
 grep -q "; 19 already graded and unchanged; grading 1 with" "$tmp/run6.log" && [ "$bob" != 100 ] &&
   ok "bob's changed submission alone was graded again ($bob points now)" || { bad "a changed submission:"; cat "$tmp/run6.log"; }
 [ "$(ls "$out/grades" | grep -c '^bob-')" -eq 1 ] || bad "bob's old grade was not cleared: $(ls "$out/grades")"
@@ -169,7 +169,7 @@ wait $first || bad "the first roster of the two failed"
 cp "$csv" "$tmp/roster-after.csv"
 "$grader" roster-collect "$out" >"$tmp/collect.log" 2>&1 || { bad "roster-collect failed:"; cat "$tmp/collect.log"; }
 cmp -s "$csv" "$tmp/roster-after.csv" && ok "roster-collect writes the same roster.csv" || bad "roster-collect wrote another CSV"
-head -1 "$csv" | grep -q '^student,verdict,score,max_score,percent,sphere,planes,triangles,polygons,passed,' ||
+head -1 "$csv" | grep -q '^"student","verdict","score","max_score","percent","sphere","planes","triangles","polygons","passed",' ||
   bad "roster.csv's header: $(head -1 "$csv")"
 
 # The grader fails (no bubblewrap and no --weaker-sandbox): no score for anyone; a rerun grades them.
@@ -179,11 +179,11 @@ cp -r "$dir/alice" "$dir/gina" "$small"/
 if VL_GRADER_BWRAP=/nonexistent/bwrap "$grader" roster 02 "$small" --out "$tmp/out2" >"$tmp/run9.log" 2>&1; then
   bad "a roster whose grades all failed exited 0"
 fi
-if grep -q '^alice,grader error,,,' "$tmp/out2/roster.csv" && grep -q "GRADER ERROR" "$tmp/run9.log" &&
+if grep -q '^"alice","grader error",,,' "$tmp/out2/roster.csv" && grep -q "GRADER ERROR" "$tmp/run9.log" &&
    grep -q "the grader failed, not the student" "$tmp/run9.log"; then
   ok "when the grader fails, the CSV says grader error and gives no score"
 else bad "a grader failure:"; cat "$tmp/run9.log" "$tmp/out2/roster.csv"; fi
-"$grader" roster 02 "$small" --out "$tmp/out2" >"$tmp/run10.log" 2>&1 && grep -q '^alice,graded,100,' "$tmp/out2/roster.csv" &&
+"$grader" roster 02 "$small" --out "$tmp/out2" >"$tmp/run10.log" 2>&1 && grep -q '^"alice","graded",100,' "$tmp/out2/roster.csv" &&
   ok "the rerun grades those the grader failed" || { bad "the rerun after a grader failure:"; cat "$tmp/run10.log"; }
 
 [ $fail -eq 0 ] && echo "the roster: all as expected"

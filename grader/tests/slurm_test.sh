@@ -40,8 +40,8 @@ if cmp -s "$tmp/roster/roster.csv" "$tmp/array/roster.csv"; then
 else
   bad "the array's CSV differs from the roster's:"; diff "$tmp/roster/roster.csv" "$tmp/array/roster.csv"
 fi
-grep -q '^ada,graded,100,' "$tmp/array/roster.csv" && grep -q '^bea,graded,0,' "$tmp/array/roster.csv" &&
-  grep -q '^dee,did not build,0,' "$tmp/array/roster.csv" || { bad "the array's scores:"; cat "$tmp/array/roster.csv"; }
+grep -q '^"ada","graded",100,' "$tmp/array/roster.csv" && grep -q '^"bea","graded",0,' "$tmp/array/roster.csv" &&
+  grep -q '^"dee","did not build",0,' "$tmp/array/roster.csv" || { bad "the array's scores:"; cat "$tmp/array/roster.csv"; }
 
 # A task run again (a requeue) grades nothing new.
 task 1
@@ -53,7 +53,7 @@ export VL_OUT=$tmp/partial
 task 0
 task 2
 if bash "$slurm/collect.sbatch" >"$tmp/collect2.log" 2>&1; then bad "collect exited 0 with a task missing"; fi
-grep -q '^bea,not graded,' "$tmp/partial/roster.csv" && grep -q "1 not graded yet" "$tmp/collect2.log" &&
+grep -q '^"bea","not graded",' "$tmp/partial/roster.csv" && grep -q "1 not graded yet" "$tmp/collect2.log" &&
   ok "a missing task leaves its student 'not graded' and the collect step exits 1" ||
   { bad "a missing task:"; cat "$tmp/collect2.log" "$tmp/partial/roster.csv"; }
 
