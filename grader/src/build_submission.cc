@@ -31,6 +31,49 @@ bool is_regular(const fs::path& p) {
     return fs::symlink_status(p, ec).type() == fs::file_type::regular;
 }
 
+/// What one grade's build may write in all: the preprocessed sources, the objects and
+/// the linked programs together. An honest grade writes about 30 MiB. Each step is also
+/// capped on its own (the file size limits below), so a build stops within a step of this.
+constexpr std::uint64_t build_bytes_cap = std::uint64_t{512} << 20;
+/// The largest file one compile step may write (a preprocessed source or an object).
+constexpr std::uint64_t compile_file_cap = std::uint64_t{128} << 20;
+/// The largest program one link may write.
+constexpr std::uint64_t link_file_cap = std::uint64_t{256} << 20;
+
+/// The regular files under `dirs` (symbolic links not followed), largest first, and
+/// their total size.
+struct written_files {
+    std::uint64_t total = 0;
+    std::vector<std::pair<std::uint64_t, std::string>> largest;  // size, name
+};
+written_files files_under(std::initializer_list<fs::path> dirs) {
+    written_files w;
+    std::error_code ec;
+    for (const fs::path& d : dirs)
+        for (fs::recursive_directory_iterator it(d, ec), end; !ec && it != end; it.increment(ec))
+            if (it->is_regular_file(ec)) {
+                const std::uint64_t size = it->file_size(ec);
+                w.total += size;
+                w.largest.emplace_back(size, it->path().filename().string());
+            }
+    std::sort(w.largest.begin(), w.largest.end(), std::greater<>());
+    if (w.largest.size() > 3) w.largest.resize(3);
+    return w;
+}
+
+/// Why `step` was not done: the build's files are over build_bytes_cap.
+std::string over_build_cap(const std::string& step, const written_files& w) {
+    std::string largest;
+    for (const auto& [size, name] : w.largest)
+        largest += (largest.empty() ? "" : ", ") + name + " " + std::to_string(size >> 20) + " MiB";
+    return step + ": not done: this build's files already take " + std::to_string(w.total >> 20) + " MiB, more than the " +
+           std::to_string(build_bytes_cap >> 20) +
+           " MiB one grade may write (preprocessed sources, objects and linked programs together; the largest: " +
+           largest +
+           "). An array with an initializer is stored whole in the object file and in every program linked from it "
+           "(`int table[50000000] = {1};` is 200 MB): fill large tables at run time, or make them smaller.\n";
+}
+
 /// A prebuilt part mounted into the link sandbox under a neutral name.
 struct prebuilt_part {
     fs::path host;
@@ -218,6 +261,7 @@ compile_outcome compile_sources(const installation& in, const stage_info& stage,
     compile_outcome outcome;
     std::vector<std::string> failures(files.size());
     std::size_t next = 0;
+    bool over_cap = false;
     std::mutex m;
     auto worker = [&] {
         for (;;) {
@@ -229,11 +273,17 @@ compile_outcome compile_sources(const installation& in, const stage_info& stage,
             }
             const std::string& file = files[k];
             const std::string stem = stem_of(file);
+            if (const written_files w = files_under({objects}); w.total > build_bytes_cap) {
+                std::lock_guard lock(m);
+                if (!over_cap) failures[k] = over_build_cap("compiling " + file, w);  // once: the rest wait for it
+                over_cap = true;
+                continue;
+            }
             run_request rq;
             rq.mounts = mounts;
             rq.environment = child_environment("/scratch", cache_env);
             rq.limits.memory_bytes = std::uint64_t{4} << 30;
-            rq.limits.file_bytes = std::uint64_t{256} << 20;
+            rq.limits.file_bytes = compile_file_cap;
             rq.limits.scratch_bytes = std::uint64_t{256} << 20;
             rq.limits.processes = 16;
             rq.argv = {in.cxx_compiler.string()};
@@ -255,7 +305,7 @@ compile_outcome compile_sources(const installation& in, const stage_info& stage,
             if (!r.succeeded()) {
                 failures[k] = (r.timed_out || r.signal != 0
                                    ? file + ": the compiler " + r.describe(rq.limits.wall_seconds) +
-                                         (r.signal == SIGXFSZ ? " (its output grew past 256 MiB)" : "") + "\n"
+                                         (r.signal == SIGXFSZ ? " (its output grew past " + std::to_string(compile_file_cap >> 20) + " MiB)" : "") + "\n"
                                    : std::string()) +
                               trim_compiler_errors(r.output);
             }
@@ -464,18 +514,30 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         rq.environment = child_environment("/scratch");
         rq.limits.wall_seconds = std::max(1.0, std::min(120.0, left()));
         rq.limits.memory_bytes = std::uint64_t{4} << 30;
-        rq.limits.file_bytes = std::uint64_t{1} << 30;
+        rq.limits.file_bytes = link_file_cap;
         rq.limits.scratch_bytes = std::uint64_t{256} << 20;
         rq.limits.processes = 16;
         timeout = rq.limits.wall_seconds;
         return run(rq, caps);
     };
+    // Why a link failed, in the student's terms.
+    auto link_errors = [&](const run_result& r, double timeout) {
+        if (r.timed_out) return "linking " + r.describe(timeout) + "\n";
+        if (r.signal == SIGXFSZ)
+            return "linking was stopped: the program grew past " + std::to_string(link_file_cap >> 20) +
+                   " MiB. An array with an initializer is stored whole in every program (`int table[50000000] = "
+                   "{1};` is 200 MB): fill large tables at run time, or make them smaller.\n";
+        return explain_link_errors(r.output, sub.files);
+    };
     auto link = [&](const std::string& program, const std::vector<prebuilt_part>& first, bool with_catch) {
+        if (const written_files w = files_under({objects, bin}); w.total > build_bytes_cap) {
+            b.errors += over_build_cap("linking", w);
+            return false;
+        }
         double timeout = 0;
         const run_result r = run_link(program, first, {}, {}, with_catch, timeout);
         if (!r.started) throw grader_error("the sandbox could not run the linker: " + r.error);
-        if (!r.succeeded())
-            b.errors += r.timed_out ? "linking " + r.describe(timeout) + "\n" : explain_link_errors(r.output, sub.files);
+        if (!r.succeeded()) b.errors += link_errors(r, timeout);
         return r.succeeded() && is_regular(bin / program);
     };
     // The render programs (render-0, render-1, ...): the renderer, the student's objects, the
@@ -483,13 +545,17 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     // vl_grader_withheld_reference. Two links at a time.
     auto render_name = [](std::size_t k) { return "render-" + std::to_string(k); };
     auto link_render = [&](std::size_t k, std::string& errors) {
+        if (const written_files w = files_under({objects, bin}); w.total > build_bytes_cap) {
+            errors = over_build_cap("linking the renderer", w);
+            return std::string();
+        }
         std::vector<prebuilt_part> withheld_from;
         for (const fs::path& o : plans[k].objects) withheld_from.push_back(oracle_parts.at(o));
         double timeout = 0;
         const run_result r = run_link(render_name(k), renderer, withheld_from, plans[k].traps, false, timeout);
         if (!r.started) return std::string("the sandbox could not run the linker: ") + r.error;
         if (!r.succeeded())
-            errors = r.timed_out ? "linking " + r.describe(timeout) + "\n" : explain_link_errors(r.output, sub.files);
+            errors = link_errors(r, timeout);
         else if (!is_regular(bin / render_name(k)))
             errors = "linking made no program\n";
         return std::string();
