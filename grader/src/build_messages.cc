@@ -35,6 +35,19 @@ std::string file_named_in(const std::string& part, const std::vector<std::string
     return std::find(files.begin(), files.end(), file) != files.end() ? file : std::string();
 }
 
+/// The student's file whose object a linker names in `part` (`/in/STEM.o`, as gold and
+/// lld name them), or "".
+std::string file_of_object_in(const std::string& part, const std::vector<std::string>& files) {
+    for (std::size_t at = part.find("/in/"); at != std::string::npos; at = part.find("/in/", at + 1)) {
+        const auto end = part.find(".o", at);
+        if (end == std::string::npos) break;
+        const std::string stem = part.substr(at + 4, end - at - 4);
+        for (const std::string& f : files)
+            if (std::filesystem::path(f).stem().string() == stem) return f;
+    }
+    return {};
+}
+
 }  // namespace
 
 std::string trim_compiler_errors(const std::string& log, int max_lines) {
@@ -71,14 +84,27 @@ std::string explain_link_errors(const std::string& log, const std::vector<std::s
     std::set<std::string> missing;
     std::map<std::string, std::set<std::string>> twice;  // symbol -> the files that define it
     std::vector<std::string> other;
+    std::string last_twice;  // the symbol of the last "defined twice", for the lines that go on about it
+    auto add_files = [&](const std::string& part, std::set<std::string>& where) {
+        if (std::string file = file_named_in(part, files); !file.empty()) where.insert(file);
+        if (std::string file = file_of_object_in(part, files); !file.empty()) where.insert(file);
+    };
     std::istringstream in(log);
     for (std::string line; std::getline(in, line);) {
+        // GNU ld:   b.cc:(.text+0x0): multiple definition of `f()'; a.o:a.cc:(.text+0x0): first defined here
+        // GNU gold: error: /in/b.o: multiple definition of 'f()'  /  /in/a.o: previous definition here
+        // LLVM lld: error: duplicate symbol: f()  /  >>> defined at ...  /in/a.o:(f())
+        // and for a symbol nobody defines: undefined reference to `g()' (ld, gold), undefined symbol: g() (lld)
         enum class link_error { undefined, defined_twice };
         const std::pair<const char*, link_error> markers[] = {{"undefined reference to ", link_error::undefined},
-                                                              {"multiple definition of ", link_error::defined_twice}};
+                                                              {"undefined symbol: ", link_error::undefined},
+                                                              {"multiple definition of ", link_error::defined_twice},
+                                                              {"duplicate symbol: ", link_error::defined_twice}};
+        bool explained = false;
         for (const auto& [marker, kind] : markers) {
             const auto at = line.find(marker);
             if (at == std::string::npos) continue;
+            explained = true;
             std::string symbol = line.substr(at + std::string(marker).size());
             if (symbol.size() >= 2 && (symbol.front() == '`' || symbol.front() == '\'')) symbol = symbol.substr(1);
             std::string rest;
@@ -88,13 +114,19 @@ std::string explain_link_errors(const std::string& log, const std::vector<std::s
             }
             if (kind == link_error::undefined) {
                 missing.insert(symbol);
-                continue;
+                last_twice.clear();
+                break;
             }
-            // GNU ld: `b.cc:(.text+0x0): multiple definition of `f()'; a.o:a.cc:(.text+0x0): first defined here`
-            std::set<std::string>& where = twice[symbol];
-            for (const std::string& part : {line.substr(0, at), rest})
-                if (std::string file = file_named_in(part, files); !file.empty()) where.insert(file);
+            last_twice = symbol;
+            for (const std::string& part : {line.substr(0, at), rest}) add_files(part, twice[symbol]);
+            break;
         }
+        if (explained) continue;
+        if (!last_twice.empty() && (line.find("previous definition here") != std::string::npos || line.starts_with(">>>"))) {
+            add_files(line, twice[last_twice]);
+            continue;
+        }
+        last_twice.clear();
         if (line.find("error:") != std::string::npos && line.find("collect2") == std::string::npos &&
             line.find("ld returned") == std::string::npos && line.find("/vl/prebuilt") == std::string::npos)
             other.push_back(line);
