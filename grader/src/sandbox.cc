@@ -30,11 +30,16 @@ using namespace sandbox_parts;
 namespace {
 
 
-/// Writes `text` to stderr with write(2): the only output allowed between fork and exec.
+/// Where a child that cannot start says why: the write end of a close-on-exec pipe, so
+/// the grader hears from it only before the exec. What runs after the exec cannot reach
+/// this pipe, so nothing a program prints or how it ends passes for a sandbox that failed.
+int child_error_fd = -1;
+
+/// Says why the child cannot start, with write(2): the only output allowed between fork
+/// and exec.
 void child_says(const char* a, const char* b = "") {
-    (void)!write(2, a, std::strlen(a));
-    (void)!write(2, b, std::strlen(b));
-    (void)!write(2, "\n", 1);
+    (void)!write(child_error_fd, a, std::strlen(a));
+    (void)!write(child_error_fd, b, std::strlen(b));
 }
 
 const char* signal_name(int sig) {
@@ -202,9 +207,10 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
     for (auto& e : cmd.environment) env.push_back(e.data());
     env.push_back(nullptr);
 
-    int out_pipe[2] = {-1, -1}, report_pipe[2] = {-1, -1}, status_pipe[2] = {-1, -1};
+    int out_pipe[2] = {-1, -1}, report_pipe[2] = {-1, -1}, status_pipe[2] = {-1, -1}, exec_pipe[2] = {-1, -1};
     auto close_pipes = [&] {
-        for (int fd : {out_pipe[0], out_pipe[1], report_pipe[0], report_pipe[1], status_pipe[0], status_pipe[1]})
+        for (int fd : {out_pipe[0], out_pipe[1], report_pipe[0], report_pipe[1], status_pipe[0], status_pipe[1],
+                       exec_pipe[0], exec_pipe[1]})
             if (fd >= 0) close(fd);
     };
     const int channel = rq.channel >= 0 ? fcntl(rq.channel, F_DUPFD_CLOEXEC, 64) : -1;
@@ -212,15 +218,16 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
     auto close_channel = [&] {
         if (channel >= 0) close(channel);
     };
-    if (pipe2(out_pipe, O_CLOEXEC) != 0 || (rq.report_fd && pipe2(report_pipe, O_CLOEXEC) != 0) ||
-        (bwrap && pipe2(status_pipe, O_CLOEXEC) != 0)) {
+    if (pipe2(out_pipe, O_CLOEXEC) != 0 || pipe2(exec_pipe, O_CLOEXEC) != 0 ||
+        (rq.report_fd && pipe2(report_pipe, O_CLOEXEC) != 0) || (bwrap && pipe2(status_pipe, O_CLOEXEC) != 0)) {
         result.error = std::string("pipe: ") + std::strerror(errno);
         close_pipes();
         close_all();
         close_channel();
         return result;
     }
-    for (int* fd : {&out_pipe[0], &out_pipe[1], &report_pipe[0], &report_pipe[1], &status_pipe[0], &status_pipe[1]})
+    for (int* fd : {&out_pipe[0], &out_pipe[1], &report_pipe[0], &report_pipe[1], &status_pipe[0], &status_pipe[1],
+                    &exec_pipe[0], &exec_pipe[1]})
         *fd = high_fd(*fd);
     const bool drop = bwrap && caps.drop_to_nobody;
     // A program reopens its fd 3 as /dev/fd/3 (Catch2's -o, rt's out.png): as nobody, it may
@@ -236,6 +243,7 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         return result;
     }
     if (child == 0) {
+        child_error_fd = exec_pipe[1];
         // Its own process group, so a timeout kills everything it started.
         setpgid(0, 0);
         prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -288,7 +296,10 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         }
         if (weak) {
             int flags = (caps.network_isolated ? CLONE_NEWNET : 0);
-            if (flags != 0 && unshare(flags) != 0) _exit(125);
+            if (flags != 0 && unshare(flags) != 0) {
+                child_says("sandbox: cannot leave the network: ", std::strerror(errno));
+                _exit(125);
+            }
         }
         if (chdir(cmd.cwd.c_str()) != 0 && !bwrap) {
             child_says("sandbox: cannot enter the working folder: ", std::strerror(errno));
@@ -298,13 +309,39 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         const int keep = bwrap     ? first_mount_fd + (drop ? 0 : static_cast<int>(cmd.mount_fds.size()))
                          : channel >= 0 ? channel_fd_number + 1
                                         : report_fd_number + 1;
-        close_range(static_cast<unsigned>(keep), ~0U, 0);
+        // The error pipe stays open until the exec closes it.
+        const auto error_fd = static_cast<unsigned>(exec_pipe[1]), first_closed = static_cast<unsigned>(keep);
+        if (error_fd >= first_closed) {
+            if (error_fd > first_closed) close_range(first_closed, error_fd - 1, 0);
+            close_range(error_fd + 1, ~0U, 0);
+        } else {
+            close_range(first_closed, ~0U, 0);
+        }
         execve(argv[0], argv.data(), env.data());
         child_says("sandbox: cannot run the program: ", std::strerror(errno));
         _exit(125);
     }
     close(out_pipe[1]);
     out_pipe[1] = -1;
+    close(exec_pipe[1]);
+    exec_pipe[1] = -1;
+    // The child either execs (the pipe closes empty) or says why it cannot and ends.
+    std::string cannot_start;
+    for (char c[512]; cannot_start.size() < 4096;) {
+        const ssize_t n = read(exec_pipe[0], c, sizeof c);
+        if (n > 0) cannot_start.append(c, static_cast<std::size_t>(n));
+        else if (n == 0 || errno != EINTR) break;
+    }
+    if (!cannot_start.empty()) {
+        kill(child, SIGKILL);
+        int ignored = 0;
+        waitpid(child, &ignored, 0);
+        close_pipes();
+        close_all();
+        close_channel();
+        result.error = cannot_start.starts_with("sandbox: ") ? cannot_start.substr(9) : cannot_start;
+        return result;
+    }
     if (report_pipe[1] >= 0) close(report_pipe[1]), report_pipe[1] = -1;
     if (status_pipe[1] >= 0) close(status_pipe[1]), status_pipe[1] = -1;
     close_all();
@@ -393,10 +430,6 @@ run_result run(const run_request& rq, const sandbox_capabilities& caps) {
         result.exit_code = WEXITSTATUS(status);
     } else if (WIFSIGNALED(status)) {
         result.signal = WTERMSIG(status);
-    }
-    if (result.exit_code == 125 && result.output.starts_with("sandbox: ")) {
-        result.started = false;
-        result.error = result.output.substr(9, 600);
     }
     return result;
 }

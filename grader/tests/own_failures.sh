@@ -6,7 +6,8 @@
 #   every stage's reference already);
 # - an --out the grader cannot write, or a machine without bubblewrap, makes it exit
 #   non-zero naming the cause, and writes no results.json that scores anyone;
-# - with --weaker-sandbox it grades anyway, and the results say the sandbox was weaker.
+# - with --weaker-sandbox it grades anyway, and the results say the sandbox was weaker;
+# - a program that ends as a sandbox that cannot start ends is still the student's outcome.
 set -uo pipefail
 grader=$1 src=$2
 shift 2
@@ -55,6 +56,17 @@ if VL_GRADER_BWRAP=/nonexistent/bwrap "$grader" grade "$stage" "$src/reference/$
   say "ok: --weaker-sandbox grades the reference 100 and says so in results.json and report.html"
 else
   bad "--weaker-sandbox:"; cat "$blocked/log3"
+fi
+# A program that ends as a sandbox that cannot start ends (status 125, "sandbox: ..." on
+# stderr) is the student's outcome in the weaker sandbox too, never the grader's failure.
+imitation="$src/grader/tests/adversarial/01-tuples/imitate-sandbox-failure"
+if [ -d "$imitation" ] && "$grader" list | grep -q '^01-tuples'; then
+  if VL_GRADER_BWRAP=/nonexistent/bwrap "$grader" calibrate "$imitation" --no-policy --weaker-sandbox \
+       --out "$blocked/imitation" >"$blocked/log4" 2>&1 && grep -q "as expected" "$blocked/log4"; then
+    say "ok: in the weaker sandbox, a program that imitates a sandbox failing to start is graded as the student's"
+  else
+    bad "a program that imitates a sandbox failing to start, in the weaker sandbox:"; cat "$blocked/log4"
+  fi
 fi
 rm -rf "$blocked"
 [ $fail -eq 0 ] && echo "the grader's own failures: all as expected"
