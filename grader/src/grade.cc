@@ -169,8 +169,10 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
             i.category = c.name;
             i.visibility = c.visibility;
             i.tags = mine[k]->tags;
-            // A public test (the student has it in tests/) says so.
+            // A public test (the student has it in tests/) says so, and shows its message;
+            // a hidden one shows it when its category says (after publication by default).
             if (is_public_test_file(mine[k]->file)) i.tags.push_back("public");
+            else i.details_visibility = c.details;
             i.max_units = share[k];
             i.test = *mine[k];
             i.kit_passes = kit_passes.contains(mine[k]->name);

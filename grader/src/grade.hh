@@ -19,6 +19,8 @@ namespace vl::grader {
 struct graded_item {
     enum class kind { build, test, scene, sweep } what = kind::test;
     std::string name, category, visibility;
+    /// A hidden test's: when its message is shown (rubric_category::details).
+    std::string details_visibility;
     std::vector<std::string> tags;
     long long max_units = 0;         ///< the item's share of the points, in thousandths of a point
     double score = 0, max_score = 0; ///< points (max_units / 1000, or 0)

@@ -16,6 +16,19 @@ namespace {
 /// Scores are shown with at most 4 decimals (a third of a point stays 0.3333).
 double tidy(double x) { return std::round(x * 1e4) / 1e4; }
 
+/// How late a visibility shows an entry to the student (Gradescope's four).
+int lateness(const std::string& visibility) {
+    return visibility == "visible" ? 0 : visibility == "after_due_date" ? 1 : visibility == "after_published" ? 2 : 3;
+}
+
+/// What the student reads in place of a hidden test's message until `details` lets it show.
+std::string details_later(const std::string& details) {
+    const std::string when = details == "after_due_date"    ? "after the due date"
+                             : details == "after_published" ? "once grades are published"
+                                                            : "to the course staff only";
+    return "What this hidden test asked, expected and got is shown " + when + ".";
+}
+
 std::string summary_text(const graded_submission& g) {
     std::string s = g.title + ": " + std::to_string(static_cast<int>(std::lround(g.score))) + " of " +
                     std::to_string(static_cast<int>(std::lround(g.max_score))) + " points.\n";
@@ -65,6 +78,25 @@ std::string results_json(const graded_submission& g) {
         }
         if (i.what == graded_item::kind::scene && i.flip_mean >= 0)
             t["extra_data"]["scene"] = {{"id", i.tags.size() > 1 ? i.tags[1] : std::string()}, {"flip_mean", i.flip_mean}};
+        // A hidden test's message states its inputs and expected values: the item shows its
+        // name, pass or fail and points, and the message goes in an entry of no points that
+        // shows as late as its category's `details` says.
+        const bool hold_details = i.what == graded_item::kind::test && !i.details_visibility.empty() &&
+                                  !i.message.empty() && lateness(i.details_visibility) > lateness(i.visibility);
+        if (hold_details) {
+            json details = t;
+            t["output"] = (i.passed() ? std::string("passed") : to_string(i.result)) + ". " +
+                          details_later(i.details_visibility);
+            details["name"] = i.name + " (details)";
+            details["number"] = t["number"].get<std::string>() + ".d";
+            details["score"] = 0;
+            details["max_score"] = 0;
+            details["visibility"] = i.details_visibility;
+            details["extra_data"] = {{"category", i.category}, {"result", to_string(i.result)}, {"details_of", i.name}};
+            tests.push_back(t);
+            tests.push_back(details);
+            continue;
+        }
         tests.push_back(t);
     }
     json categories = json::array();

@@ -141,6 +141,7 @@ roster_record record_from_results(const fs::path& results_json, const std::strin
         r.categories.push_back({c.value("name", ""), c.value("score", 0.0), c.value("max_score", 0.0)});
     std::string build_result;
     for (const auto& t : j.value("tests", json::array())) {
+        if (t.value("extra_data", json::object()).contains("details_of")) continue;  // a hidden test's message, not an item
         const std::string result = t.value("extra_data", json::object()).value("result", "");
         if (t.value("number", "") == "0") build_result = result;
         switch (from_string(result).value_or(item_result::not_run)) {

@@ -35,11 +35,13 @@ std::vector<std::string> strings(const fs::path& file, const toml::table& t, con
     return out;
 }
 
-std::string visibility(const fs::path& file, const toml::table& t, const std::string& fallback) {
-    const std::string v = t["visibility"].value_or(fallback);
+/// The Gradescope visibility `t[key]`, or `fallback` when there is none.
+std::string visibility(const fs::path& file, const toml::table& t, const std::string& fallback,
+                       const char* key = "visibility") {
+    const std::string v = t[key].value_or(fallback);
     if (!visibilities.contains(v))
-        throw grader_error(place(file, t.get("visibility") ? *t.get("visibility") : static_cast<const toml::node&>(t)) +
-                           ": visibility '" + v + "': use visible, hidden, after_due_date or after_published");
+        throw grader_error(place(file, t.get(key) ? *t.get(key) : static_cast<const toml::node&>(t)) + ": " + key + " '" +
+                           v + "': use visible, hidden, after_due_date or after_published");
     return v;
 }
 
@@ -242,6 +244,7 @@ rubric load_rubric(const fs::path& file, const fs::path& public_scenes, bool san
                 }
             }
             cat.visibility = visibility(file, c, r.visibility);
+            cat.details = visibility(file, c, cat.details, "details");
             r.categories.push_back(cat);
         }
     }

@@ -20,6 +20,9 @@ struct rubric_category {
     std::vector<std::string> tests;   ///< test names that put a test here
     std::map<std::string, double> weights;  ///< by tag (no brackets) or test name; others weigh 1
     std::string visibility;
+    /// When a hidden test's message (what it asked, expected and got) is shown on
+    /// Gradescope; until then the student sees its name, pass or fail and points.
+    std::string details = "after_published";
 
     /// The weight of `t`: its name's, else the largest of its tags', else 1.
     double weight_of(const test_case_info& t) const;
