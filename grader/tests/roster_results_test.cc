@@ -98,7 +98,7 @@ std::vector<std::string> naive_fields(const std::string& line, char sep) {
 
 }  // namespace
 
-TEST_CASE("roster csv: no field starts a formula for readers that split at , ; tab or | and ignore the quotes") {
+TEST_CASE("roster csv: no field starts a formula for readers that split at commas, semicolons, tabs or bars and ignore quotes") {
     // Folder names and messages as a student could choose them.
     const std::vector<std::string> names = {"a;=1+1",       "x, =cmd|' /C calc'!A0", "t\t@SUM(A1)", "p|+1",
                                             "q;  -2",       "r\n=HYPERLINK(\"u\")",  "\r=1",       " =1",
