@@ -61,8 +61,11 @@ written_files files_under(std::initializer_list<fs::path> dirs) {
     return w;
 }
 
-/// Why `step` was not done: the build's files are over build_bytes_cap.
-std::string over_build_cap(const std::string& step, const written_files& w) {
+/// Why `step` may not be done, when the files under `dirs` are over build_bytes_cap;
+/// otherwise "".
+std::string over_build_cap(const std::string& step, std::initializer_list<fs::path> dirs) {
+    const written_files w = files_under(dirs);
+    if (w.total <= build_bytes_cap) return {};
     std::string largest;
     for (const auto& [size, name] : w.largest)
         largest += (largest.empty() ? "" : ", ") + name + " " + std::to_string(size >> 20) + " MiB";
@@ -273,9 +276,9 @@ compile_outcome compile_sources(const installation& in, const stage_info& stage,
             }
             const std::string& file = files[k];
             const std::string stem = stem_of(file);
-            if (const written_files w = files_under({objects}); w.total > build_bytes_cap) {
+            if (std::string refusal = over_build_cap("compiling " + file, {objects}); !refusal.empty()) {
                 std::lock_guard lock(m);
-                if (!over_cap) failures[k] = over_build_cap("compiling " + file, w);  // once: the rest wait for it
+                if (!over_cap) failures[k] = std::move(refusal);  // once: the rest wait for it
                 over_cap = true;
                 continue;
             }
@@ -305,7 +308,10 @@ compile_outcome compile_sources(const installation& in, const stage_info& stage,
             if (!r.succeeded()) {
                 failures[k] = (r.timed_out || r.signal != 0
                                    ? file + ": the compiler " + r.describe(rq.limits.wall_seconds) +
-                                         (r.signal == SIGXFSZ ? " (its output grew past " + std::to_string(compile_file_cap >> 20) + " MiB)" : "") + "\n"
+                                         (r.signal == SIGXFSZ
+                                              ? " (its output grew past " + std::to_string(compile_file_cap >> 20) + " MiB)"
+                                              : "") +
+                                         "\n"
                                    : std::string()) +
                               trim_compiler_errors(r.output);
             }
@@ -530,8 +536,8 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         return explain_link_errors(r.output, sub.files);
     };
     auto link = [&](const std::string& program, const std::vector<prebuilt_part>& first, bool with_catch) {
-        if (const written_files w = files_under({objects, bin}); w.total > build_bytes_cap) {
-            b.errors += over_build_cap("linking", w);
+        if (const std::string refusal = over_build_cap("linking", {objects, bin}); !refusal.empty()) {
+            b.errors += refusal;
             return false;
         }
         double timeout = 0;
@@ -545,10 +551,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     // vl_grader_withheld_reference. Two links at a time.
     auto render_name = [](std::size_t k) { return "render-" + std::to_string(k); };
     auto link_render = [&](std::size_t k, std::string& errors) {
-        if (const written_files w = files_under({objects, bin}); w.total > build_bytes_cap) {
-            errors = over_build_cap("linking the renderer", w);
-            return std::string();
-        }
+        if (errors = over_build_cap("linking the renderer", {objects, bin}); !errors.empty()) return std::string();
         std::vector<prebuilt_part> withheld_from;
         for (const fs::path& o : plans[k].objects) withheld_from.push_back(oracle_parts.at(o));
         double timeout = 0;
