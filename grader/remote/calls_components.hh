@@ -6,7 +6,24 @@
 ///
 /// An intersection crosses as its t and the object hit, named by handle: an object is
 /// never named by its address, so nothing either end sends is ever used as a pointer.
+///
+/// **Lent objects.** A test may put an object of its own (a probe, a stage's reference
+/// shape) into a composite of the student's. The object stays in the judge; the subject
+/// gets a stand-in that answers its box, ball, type and surface from what was sent with
+/// it, and turns intersect(), normal(), contains() and write() into calls back to the
+/// judge (the `lent_*` operations below, which the judge serves). So every test of a lent
+/// object is counted by the judge, in its own counters. A lent object's handle has
+/// `lent_bit` set; the subject's own objects' handles never do.
+///
+/// **Declared counts.** The answer to intersect and intersect_each ends with what the
+/// student's code counted in the subject meanwhile (its bounding-volume tests, and its
+/// intersect() calls on objects of its own), less the calls on lent objects and the call
+/// itself, which the judge counts. The judge adds them to its counters: they are what the
+/// student's code declares, as vl::count_bounding_volume_tests() always was, and only ever
+/// add to the judge's own counts.
 #include "channel.hh"
+#include "vl/primitive.hh"
+#include "vl/stats.hh"
 
 namespace vl::remote::calls_components {
 
@@ -25,8 +42,65 @@ enum op : op_id {
     write,              ///< -> string: what write() wrote
     surface_values,     ///< -> color clr, double kdr, ksr, kdt, kst, n, ior
     intersect_each,     ///< (no object first) vector of handles, vector of rays -> per ray, per object: double t, handle hit
+    insert,             ///< composite, child (see child_kind) -> nothing: the student's insert()
+    delete_all_children,  ///< composite -> nothing
+    children_tree,      ///< composite -> u32 how many children, they and theirs in pre-order (vector of tree_entry), vector of surface
+    adopt,              ///< handle into, handle from: the object `from` takes the place of `into` (made again)
     end,
 };
+
+/// The operations the judge serves for the subject: a lent object's members (its handle
+/// first), and the other stages' factories the student's code calls (stage_02.hh's).
+enum lent_op : op_id {
+    lent_intersect = 192,  ///< ray -> double t, handle hit (lent_bit set, or the subject's own)
+    lent_normal,           ///< point -> vector
+    lent_contains,         ///< point -> bool
+    lent_write,            ///< -> string
+    lent_describe,         ///< -> description (for a lent object the subject first meets as a hit)
+    make_lent_sphere,      ///< (no object first) point, double -> handle, description
+    make_lent_plane,       ///< point, vector -> handle, description
+    make_lent_triangle,    ///< point, point, point -> handle, description
+    make_lent_polygon,     ///< vector of points -> handle, description
+};
+
+/// The handle of a lent object has this bit set.
+inline constexpr handle lent_bit = handle{1} << 63;
+
+/// What the subject's stand-in of a lent object knows of it without asking.
+struct description {
+    std::uint8_t composite = 0;  ///< 1 for an rtab_composite
+    std::uint8_t primitive = 0;  ///< 1 for a vl::primitive the subject may set a surface on
+    point min, max;
+    rtab_component::ball ball;
+    double zero_t = rtab_component::default_zero_t;
+    color clr;
+    double kdr = 0, ksr = 0, kdt = 0, kst = 0, n = 1, ior = 1;
+};
+
+/// How a child crosses with insert (and make_transformed): none (nullptr), one of the
+/// subject's objects (its handle: the subject's composite takes it over), or a lent one
+/// (its handle, then its type name and description).
+enum class child_kind : std::uint8_t { none = 0, own = 1, lent = 2 };
+
+/// One object of a children_tree answer: the object, whether it is a composite, how many
+/// children of its own follow it, and for a lent primitive the surface the subject set
+/// (an index into the answer's list of surfaces, which primitives share).
+struct tree_entry {
+    handle object = 0;
+    std::uint8_t composite = 0;
+    std::uint8_t has_surface = 0;
+    std::uint32_t children = 0;
+    std::uint32_t surface_index = 0;
+};
+
+/// The most entries one children_tree answers with.
+inline constexpr std::size_t max_tree = 1 << 18;
+
+/// The most objects the subject may have the judge make (stage 02's factories).
+inline constexpr std::size_t max_made = 1 << 20;
+
+/// What the student's code counted: vl::detail::tallies, crossing as bytes.
+using declared_counts = detail::tallies;
 
 /// Every operation number is below this: the size of a handler table.
 inline constexpr op_id table_size = 256;
@@ -38,3 +112,11 @@ inline constexpr std::size_t max_batch = 1 << 16;
 inline constexpr std::size_t max_written_bytes = 1 << 20;
 
 }  // namespace vl::remote::calls_components
+
+namespace vl::remote {
+using calls_components::child_kind;
+using calls_components::declared_counts;
+using calls_components::description;
+using calls_components::lent_bit;
+using calls_components::tree_entry;
+}  // namespace vl::remote

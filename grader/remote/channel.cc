@@ -173,6 +173,10 @@ void endpoint::serve_call(frame& f) {
         const auto op = f.body.get<op_id>();
         if (op >= handlers_.size() || !handlers_[op]) throw protocol_error("a call of unknown operation " + std::to_string(op));
         handlers_[op](f.body, result);
+        // An answer too large to cross is the call's failure, not the connection's.
+        if (result.bytes().size() + header_bytes + sizeof(std::uint32_t) > max_message_bytes)
+            throw protocol_error("an answer of " + std::to_string(result.bytes().size()) + " bytes, more than the " +
+                                 std::to_string(max_message_bytes) + " that cross at once");
     } catch (...) {
         result = message_writer();
         write_exception(std::current_exception(), result);

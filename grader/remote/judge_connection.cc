@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "connections.hh"
+#include "judge_components.hh"
 
 namespace vl::remote {
 
@@ -98,7 +99,9 @@ endpoint& subject() {
                 throw protocol_error("your code's process is not there to take a connection (it ended, or crashed)");
             }
         }
-        mine = new endpoint(ends[0], shared, true, std::vector<handler>{}, "your code's process");
+        // It serves the subject's calls on the judge's lent objects (judge_components.hh).
+        mine = new endpoint(ends[0], shared, true, judge_handlers(), "your code's process");
+        mine->on_release = released_by_subject;
         this_thread_connection.end = mine;
         this_thread_connection.socket = ends[0];
         this_thread_connection.shared = shared;

@@ -19,6 +19,11 @@ std::vector<handler> subject_handlers();
 /// Drops the object `h`, whatever its kind (the judge's stand-in for it has gone).
 void release_object(handle h);
 
+/// The judge's end of the connection this thread serves: where a lent object's calls
+/// go back (calls_components.hh). nullptr on a thread that serves none (one the student's
+/// code started).
+endpoint*& judge_here();
+
 /// The next handle: unique among every kind of object, never 0.
 inline handle next_handle() {
     static std::atomic<handle> last = 0;

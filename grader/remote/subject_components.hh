@@ -1,12 +1,17 @@
 #pragma once
 /// \file
 /// \brief The subject's side of the calls on objects (calls_components.hh): the objects
-/// the student's code made, by handle, and the handlers that call their members.
+/// the student's code made, by handle, the handlers that call their members, and the
+/// stand-ins of the objects the judge lends (a test's probe inside the student's
+/// composite), whose tests are calls back to the judge.
 #include <map>
 #include <memory>
 #include <mutex>
+#include <string>
 
+#include "calls_components.hh"
 #include "subject.hh"
+#include "vl/primitive.hh"
 #include "vl/rt_base_objects.hh"
 
 namespace vl::remote {
@@ -24,12 +29,21 @@ public:
     void adopt(handle into, handle from);
     /// The object `h`; throws protocol_error for a handle of no object.
     rtab_component& at(handle h) const;
-    /// The handle of `object`, given one now if it has none; 0 for nullptr.
+    /// The handle of `object`, given one now if it has none; 0 for nullptr. A lent
+    /// object's stand-in is named by its lent handle.
     handle name(const rtab_component* object);
-    /// Drops the object `h` (it is destroyed if owned here).
+    /// Hands over the object `h`, owned here, to whoever takes it (a composite it is
+    /// inserted into); it keeps its handle while it lives.
+    std::unique_ptr<rtab_component> take(handle h);
+    /// Drops the object `h` (it is destroyed if owned here, and its children's handles
+    /// with it).
     void erase(handle h);
+    /// Forgets the handles of the children of `h` and theirs (they are about to go).
+    void forget_parts(handle h);
 
 private:
+    /// Forgets the handles of `object`'s children and theirs (it is going).
+    void forget_parts_locked(const rtab_component& object);
     mutable std::mutex mutex_;
     std::map<handle, const rtab_component*> by_handle_;
     std::map<const rtab_component*, handle> by_address_;
@@ -41,5 +55,14 @@ component_table& components();
 
 /// Adds the handlers of calls_components.hh to `table`.
 void add_component_handlers(std::vector<handler>& table);
+
+/// The child an insert (or a stage's factory) names, as put by the judge's put_child():
+/// nullptr, one of the subject's own objects (taken over), or a stand-in of a lent one.
+std::unique_ptr<rtab_component> read_child(message_reader& in);
+
+/// A stand-in of an object the judge made for the student's code (stage 02's factories,
+/// as the subject of a later stage has them): `h` and its type and description as the
+/// judge answered. It is a vl::primitive, whose surface the student's code may set.
+std::unique_ptr<primitive> made_by_judge(message_reader& answer);
 
 }  // namespace vl::remote

@@ -14,6 +14,13 @@
 #include "connections.hh"
 #include "subject.hh"
 
+namespace vl::remote {
+endpoint*& judge_here() {
+    thread_local endpoint* here = nullptr;
+    return here;
+}
+}  // namespace vl::remote
+
 int main() {
     using namespace vl::remote;
     const std::vector<handler> handlers = subject_handlers();
@@ -31,12 +38,14 @@ int main() {
                 {
                     endpoint judge(c.socket, shared, false, handlers, "the judge");
                     judge.on_release = release_object;
+                    judge_here() = &judge;
                     try {
                         judge.serve();
                     } catch (const protocol_error& e) {
                         std::cerr << "subject: " << e.what() << "\n";
                         broken = true;
                     }
+                    judge_here() = nullptr;
                 }
                 munmap(shared, shared_bytes);
                 close(c.socket);

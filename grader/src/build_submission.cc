@@ -415,8 +415,15 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
             hidden.push_back({stage.hidden_objects[k], "/vl/prebuilt/tests" + std::to_string(k) + ".o"});
     for (std::size_t k = 0; k < in.renderer_objects.size(); ++k)
         renderer.push_back({in.renderer_objects[k], "/vl/prebuilt/rt" + std::to_string(k) + ".o"});
-    for (const auto& [name, s] : in.stages)
-        if (name != stage.name) group.push_back({s.reference_library, "/vl/prebuilt/reference_" + s.number + ".a"});
+    // The subject's group: the same, less the stages whose pieces it asks of the judge.
+    std::vector<prebuilt_part> subject_group;
+    for (const auto& [name, s] : in.stages) {
+        if (name == stage.name) continue;
+        const prebuilt_part part{s.reference_library, "/vl/prebuilt/reference_" + s.number + ".a"};
+        group.push_back(part);
+        if (std::find(stage.subject_without.begin(), stage.subject_without.end(), s.number) == stage.subject_without.end())
+            subject_group.push_back(part);
+    }
     // The graded stage's oracle, its reference under its other name, for the pieces a graded
     // scene does not take from the submission (hidden/common/graded_pieces.cc): each render
     // program links the oracle's registration and the objects of the pieces its scenes do
@@ -427,8 +434,10 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     std::map<fs::path, prebuilt_part> oracle_parts;
     for (const oracle_map::object& o : oracle.objects)
         oracle_parts.emplace(o.path, prebuilt_part{o.path, "/vl/prebuilt/oracle" + std::to_string(oracle_parts.size()) + ".o"});
-    for (std::size_t k = 0; k < in.framework_libraries.size(); ++k)
+    for (std::size_t k = 0; k < in.framework_libraries.size(); ++k) {
         group.push_back({in.framework_libraries[k], "/vl/prebuilt/framework" + std::to_string(k) + ".a"});
+        subject_group.push_back(group.back());
+    }
     const prebuilt_part catch_main{in.catch_main, "/vl/prebuilt/catch_main.a"};
 
     // 2. The policy: the symbols of every object, and the student's lines of every source.
@@ -493,7 +502,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
     // symbols `withheld` bound to vl_grader_withheld_reference), and the group.
     auto run_link = [&](const std::string& program, const std::vector<prebuilt_part>& first,
                         const std::vector<prebuilt_part>& then, const std::vector<std::string>& withheld,
-                        bool with_catch, double& timeout) {
+                        bool with_catch, const std::vector<prebuilt_part>& libraries, double& timeout) {
         run_request rq;
         rq.mounts = {{objects, "/in", false}, {bin, "/out", true}};
         std::vector<std::string> argv = {in.cxx_compiler.string()};
@@ -513,7 +522,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         for (const std::string& symbol : withheld) argv.push_back("-Wl,--defsym=" + symbol + "=vl_grader_withheld_reference");
         argv.push_back("-Wl,--start-group");
         if (with_catch) add(catch_main);
-        for (const prebuilt_part& p : group) add(p);
+        for (const prebuilt_part& p : libraries) add(p);
         argv.push_back("-Wl,--end-group");
         argv.insert(argv.end(), in.system_libraries.begin(), in.system_libraries.end());
         rq.argv = argv;
@@ -541,7 +550,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
             return false;
         }
         double timeout = 0;
-        const run_result r = run_link(program, first, {}, {}, with_catch, timeout);
+        const run_result r = run_link(program, first, {}, {}, with_catch, judged ? subject_group : group, timeout);
         if (!r.started) throw grader_error("the sandbox could not run the linker: " + r.error);
         if (!r.succeeded()) b.errors += link_errors(r, timeout);
         return r.succeeded() && is_regular(bin / program);
@@ -555,7 +564,7 @@ build_outcome build_submission(const prepared_submission& sub, const stage_info&
         std::vector<prebuilt_part> withheld_from;
         for (const fs::path& o : plans[k].objects) withheld_from.push_back(oracle_parts.at(o));
         double timeout = 0;
-        const run_result r = run_link(render_name(k), renderer, withheld_from, plans[k].traps, false, timeout);
+        const run_result r = run_link(render_name(k), renderer, withheld_from, plans[k].traps, false, group, timeout);
         if (!r.started) return std::string("the sandbox could not run the linker: ") + r.error;
         if (!r.succeeded())
             errors = link_errors(r, timeout);

@@ -69,6 +69,9 @@ installation load_installation() {
             info.hidden_objects = paths(s, "hidden_objects");
             info.judge = str(s, "judge");
             info.subject_objects = paths(s, "subject_objects");
+            if (const toml::array* without = s["subject_without"].as_array())
+                for (const auto& n : *without)
+                    if (const auto v = n.value<std::string>()) info.subject_without.push_back(*v);
             in.stages[info.name] = info;
         }
     }

@@ -33,6 +33,9 @@ struct stage_info {
     std::filesystem::path judge;
     /// The subject's own parts (its main, the stage's calls), linked with a submission.
     std::vector<std::filesystem::path> subject_objects;
+    /// The stages ("02") whose pieces the subject asks of the judge: their reference is not
+    /// linked into the subject.
+    std::vector<std::string> subject_without;
 };
 
 /// \brief The grader's installation: the source tree, the main build and its parts.

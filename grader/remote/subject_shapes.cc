@@ -1,0 +1,41 @@
+// Stage 02's contract as the subject of a later stage has it: each factory is a call to
+// the judge, which makes the reference's shape and lends it (calls_components.hh). The
+// student's composite holds a stand-in whose tests the judge counts; the surface the
+// student's code gives it is the stand-in's, and reaches the judge with its children.
+#include <memory>
+#include <vector>
+
+#include "stage_02.hh"
+#include "subject_components.hh"
+
+namespace vl::stage02 {
+
+namespace {
+
+namespace c = remote::calls_components;
+
+std::unique_ptr<primitive> made(c::lent_op op, const remote::message_writer& args, const char* what) {
+    remote::endpoint* judge = remote::judge_here();
+    if (judge == nullptr)
+        throw remote::protocol_error(std::string(what) + " was called on a thread your code started itself: "
+                                     "the grader makes shapes only on the threads the tests call on");
+    remote::message_reader answer = judge->call(op, args, what);
+    return remote::made_by_judge(answer);
+}
+
+}  // namespace
+
+std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
+    return made(c::make_lent_sphere, remote::message_writer().put(center).put(radius), "make_sphere");
+}
+std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {
+    return made(c::make_lent_plane, remote::message_writer().put(point_on_plane).put(normal), "make_plane");
+}
+std::unique_ptr<primitive> make_triangle(const point& a, const point& b, const point& c) {
+    return made(c::make_lent_triangle, remote::message_writer().put(a).put(b).put(c), "make_triangle");
+}
+std::unique_ptr<primitive> make_polygon(std::vector<point> vertices) {
+    return made(c::make_lent_polygon, remote::message_writer().put_vector(vertices), "make_polygon");
+}
+
+}  // namespace vl::stage02
