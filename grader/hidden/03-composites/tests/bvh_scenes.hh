@@ -23,7 +23,7 @@ inline double small_radius(std::size_t n) { return 0.15 / std::cbrt(static_cast<
 inline void random_spheres(probe_set& set, rtab_composite& into, std::size_t n, unsigned seed) {
     dice random(seed);
     const double r = small_radius(n);
-    for (std::size_t k = 0; k < n; ++k) into.insert(set.add(std::make_unique<probe_sphere>(random.in_cube(), r)));
+    for (std::size_t k = 0; k < n; ++k) into.insert(set.add(std::make_unique<probe_sphere>(random.in_cube(), r, true)));
 }
 
 /// Most spheres in eight tight clusters, the rest spread thin; returns the cluster centres.
@@ -34,12 +34,12 @@ inline std::vector<point> clustered_spheres(probe_set& set, rtab_composite& into
     const double r = small_radius(n);
     for (std::size_t k = 0; k < n; ++k) {
         if (k % 10 == 9) {
-            into.insert(set.add(std::make_unique<probe_sphere>(random.in_cube(), r)));
+            into.insert(set.add(std::make_unique<probe_sphere>(random.in_cube(), r, true)));
             continue;
         }
         const point& c = centres[k % 8];
         const vector offset = random.uniform(0, 0.05) * random.direction();
-        into.insert(set.add(std::make_unique<probe_sphere>(c + offset, 0.3 * r)));
+        into.insert(set.add(std::make_unique<probe_sphere>(c + offset, 0.3 * r, true)));
     }
     return centres;
 }

@@ -33,7 +33,7 @@ namespace {
 void varied_spheres(probe_set& set, rtab_composite& into, std::size_t n, unsigned seed) {
     dice random(seed);
     for (std::size_t k = 0; k < n; ++k)
-        into.insert(set.add(std::make_unique<probe_sphere>(random.in_cube(), random.uniform(0.01, 0.2))));
+        into.insert(set.add(std::make_unique<probe_sphere>(random.in_cube(), random.uniform(0.01, 0.2), true)));
 }
 
 /// Rays of every kind at the unit cube: from outside, from inside, along the axes (two
