@@ -52,7 +52,7 @@ enum op : op_id {
 /// The operations the judge serves for the subject: a lent object's members (its handle
 /// first), and the other stages' factories the student's code calls (stage_02.hh's).
 enum lent_op : op_id {
-    lent_intersect = 192,  ///< ray -> double t, handle hit (lent_bit set, or the subject's own)
+    lent_intersect = 192,  ///< ray -> double t, handle hit, u8 1 and the type and description of a lent object hit (else 0)
     lent_normal,           ///< point -> vector
     lent_contains,         ///< point -> bool
     lent_write,            ///< -> string

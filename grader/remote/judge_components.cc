@@ -216,7 +216,16 @@ std::vector<handler> lent_handlers() {
         const rtab_component* o = (id & lent_bit) != 0 ? lent_object(id) : nullptr;
         if (o == nullptr) throw protocol_error("no object of the judge's has the handle " + std::to_string(id));
         const intersection i = o->intersect(r);  // counted here, in the judge's own counters
-        out.put(i.t).put(i.object == o ? id : name_for_subject(i.object, root_of(id)));
+        const handle hit = i.object == o ? id : name_for_subject(i.object, root_of(id));
+        out.put(i.t).put(hit);
+        // A lent object hit is described as it is now: a test may change a surface between
+        // calls, as in one process the student's code would see at once.
+        if ((hit & lent_bit) != 0) {
+            out.put(std::uint8_t{1});
+            put_description(out, *i.object);
+        } else {
+            out.put(std::uint8_t{0});
+        }
     };
     h[c::lent_normal] = [](message_reader& in, message_writer& out) {
         const rtab_component& o = lent_argument(in);

@@ -66,6 +66,11 @@ endpoint& judge_of_thread() {
 class lent_identity {
 public:
     virtual handle lent_id() const = 0;
+    /// True for an object the student's code had the judge make (its surface is the
+    /// student's code's to set).
+    virtual bool made() const = 0;
+    /// The judge describes the object again (a hit on it).
+    virtual void describe_again(const description& d) = 0;
 
 protected:
     ~lent_identity() = default;
@@ -83,7 +88,7 @@ lent_registry& lent_ones() {
     return *r;
 }
 
-const rtab_component* object_named(handle h);
+const rtab_component* object_named(handle h, const std::string* type = nullptr, const description* d = nullptr);
 
 /// \brief The stand-in of a lent object, of base `Base`: box, ball and type as the judge
 /// described them; intersect(), normal(), contains() and write() are calls to the judge.
@@ -105,10 +110,15 @@ public:
             if (endpoint* e = judge_here()) e->release(h_);
     }
     handle lent_id() const override { return h_; }
+    bool made() const override { return made_; }
+    void describe_again(const description& d) override {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        d_ = d;
+    }
     std::string type_name() const override { return type_; }
-    point min_point() const override { return d_.min; }
-    point max_point() const override { return d_.max; }
-    rtab_component::ball bounding_ball() const override { return d_.ball; }
+    point min_point() const override { return described().min; }
+    point max_point() const override { return described().max; }
+    rtab_component::ball bounding_ball() const override { return described().ball; }
     vector normal(const point& p) const override {
         message_reader in = judge_of_thread().call(c::lent_normal, message_writer().put(h_).put(p), "normal");
         const auto n = in.get<vector>();
@@ -128,20 +138,35 @@ public:
     }
 
 protected:
-    const description& described() const { return d_; }
+    /// What the judge said of the object the last time (a test may change it between calls).
+    description described() const {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        return d_;
+    }
 
 private:
     intersection find_intersection(const ray& r) const override {
         message_reader in = judge_of_thread().call(c::lent_intersect, message_writer().put(h_).put(r), "intersect");
         const auto t = in.get<double>();
         const auto hit = in.get<handle>();
-        in.finish();
-        const intersection i{t, hit == h_ ? this : object_named(hit)};
+        const rtab_component* object = nullptr;
+        if (in.get<std::uint8_t>() != 0) {  // a lent object, described as it is now
+            std::string type = in.get_string();
+            const auto d = in.get<description>();
+            in.finish();
+            object = hit == h_ ? this : object_named(hit, &type, &d);
+            if (object == this) const_cast<lent_common*>(this)->describe_again(d);
+        } else {
+            in.finish();
+            object = object_named(hit);
+        }
+        const intersection i{t, object};
         ++accounted.calls[this->is_composite() ? 1 : 0][outcome_of(i)];  // the judge counted it
         return i;
     }
     handle h_;
     std::string type_;
+    mutable std::mutex mutex_;
     description d_;
     bool made_;
 };
@@ -180,27 +205,41 @@ public:
     }
 };
 
+/// A stand-in of the lent object `h`. Only an object the student's code had made is a
+/// vl::primitive here (its surface is the student's code's to set); a test's own object
+/// answers its surface as the judge last described it.
 std::unique_ptr<rtab_component> lent_stand_in(handle h, std::string type, const description& d, bool made) {
     if ((h & lent_bit) == 0) throw protocol_error("a lent object without a lent handle");
-    if (d.primitive != 0) return std::make_unique<lent_primitive>(h, std::move(type), d, made);
+    if (made) return std::make_unique<lent_primitive>(h, std::move(type), d, made);
     if (d.composite != 0) return std::make_unique<lent_with_surface<rtab_composite>>(h, std::move(type), d, made);
     return std::make_unique<lent_with_surface<rtab_component>>(h, std::move(type), d, made);
 }
 
-/// The object a hit names: one of the subject's, or a lent one (asked of the judge the
-/// first time it is met).
-const rtab_component* object_named(handle h) {
+/// The object a hit names: one of the subject's, or a lent one (described by the answer,
+/// `type` and `d`, or asked of the judge the first time it is met).
+const rtab_component* object_named(handle h, const std::string* type, const description* d) {
     if (h == 0) return nullptr;
     if ((h & lent_bit) == 0) return &components().at(h);
     {
         const std::lock_guard<std::mutex> lock(lent_ones().mutex);
-        if (const auto it = lent_ones().by_handle.find(h); it != lent_ones().by_handle.end()) return it->second;
+        if (const auto it = lent_ones().by_handle.find(h); it != lent_ones().by_handle.end()) {
+            if (d != nullptr)
+                if (auto* l = const_cast<lent_identity*>(dynamic_cast<const lent_identity*>(it->second)); l && !l->made())
+                    l->describe_again(*d);
+            return it->second;
+        }
     }
-    message_reader in = judge_of_thread().call(c::lent_describe, message_writer().put(h), "the object hit");
-    std::string type = in.get_string();
-    const auto d = in.get<description>();
-    in.finish();
-    std::unique_ptr<rtab_component> made = lent_stand_in(h, std::move(type), d, false);
+    std::string asked_type;
+    description asked;
+    if (d == nullptr) {
+        message_reader in = judge_of_thread().call(c::lent_describe, message_writer().put(h), "the object hit");
+        asked_type = in.get_string();
+        asked = in.get<description>();
+        in.finish();
+        type = &asked_type;
+        d = &asked;
+    }
+    std::unique_ptr<rtab_component> made = lent_stand_in(h, *type, *d, false);
     const rtab_component* p = made.get();
     const std::lock_guard<std::mutex> lock(lent_ones().mutex);
     lent_ones().met.push_back(std::move(made));
@@ -369,6 +408,11 @@ std::unique_ptr<rtab_component> read_child(message_reader& in) {
         }
     }
     throw protocol_error("a child of no known kind");
+}
+
+std::unique_ptr<object_list> lent_list(handle h, std::string type, const description& d) {
+    if ((h & lent_bit) == 0) throw protocol_error("a lent object without a lent handle");
+    return std::make_unique<lent_with_surface<object_list>>(h, std::move(type), d, false);
 }
 
 std::unique_ptr<primitive> made_by_judge(message_reader& answer) {

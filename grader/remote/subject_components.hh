@@ -11,6 +11,7 @@
 
 #include "calls_components.hh"
 #include "subject.hh"
+#include "vl/object_list.hh"
 #include "vl/primitive.hh"
 #include "vl/rt_base_objects.hh"
 
@@ -59,6 +60,11 @@ void add_component_handlers(std::vector<handler>& table);
 /// The child an insert (or a stage's factory) names, as put by the judge's put_child():
 /// nullptr, one of the subject's own objects (taken over), or a stand-in of a lent one.
 std::unique_ptr<rtab_component> read_child(message_reader& in);
+
+/// A stand-in of the judge's object `h` (lent, of type `type` as `d` describes it) that is
+/// a vl::object_list, as a scene's root is: a scene in the subject whose objects are the
+/// judge's.
+std::unique_ptr<object_list> lent_list(handle h, std::string type, const description& d);
 
 /// A stand-in of an object the judge made for the student's code (stage 02's factories,
 /// as the subject of a later stage has them): `h` and its type and description as the

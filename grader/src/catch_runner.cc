@@ -284,8 +284,11 @@ test_outcome run_judged_test_case(const fs::path& judge, const fs::path& subject
     // The verdict is the judge's; the subject's end can only take a pass away. Its process
     // must end cleanly once the judge is done, as a test program had to.
     if (!s.succeeded()) {
-        const std::string how = "your code's process " + std::string(s.signal != 0 ? "was " : "ended with ") +
-                                s.describe(limits.wall_seconds);
+        std::string how = "your code's process " + std::string(s.signal != 0 ? "was " : "ended with ") +
+                          s.describe(limits.wall_seconds);
+        // What it printed last says why, in its own words (an uncaught exception's message).
+        if (const std::string tail = s.output_tail(500); !tail.empty())
+            how += "; the end of what your code printed:\n" + tail;
         if (o.result == item_result::passed || s.signal != 0) o.result = item_result::crashed;
         o.message += (o.message.empty() || o.message.ends_with("\n") ? "" : "\n") + how;
         o.warnings.clear();
