@@ -46,6 +46,7 @@ enum op : op_id {
     delete_all_children,  ///< composite -> nothing
     children_tree,      ///< composite -> u32 how many children, they and theirs in pre-order (vector of tree_entry), vector of surface
     adopt,              ///< handle into, handle from: the object `from` takes the place of `into` (made again)
+    insert_each,        ///< composite, u32 n, n children -> as insert: the student's insert() of each in turn
     end,
 };
 

@@ -119,7 +119,7 @@ public:
     }
 
 private:
-    void sync() const override {
+    void update() const override {
         if (!again_ && same(sent_, to_world_)) return;
         auto* self = const_cast<remote_transformed*>(this);
         self->again_ = false;
@@ -158,7 +158,8 @@ public:
     }
 
 private:
-    void sync() const override {
+    bool defers_bounded_children() const override { return true; }
+    void update() const override {
         if (leaf_size_ == sent_) return;
         auto* self = const_cast<remote_bvh*>(this);
         self->sent_ = leaf_size_;
@@ -167,7 +168,10 @@ private:
     int sent_ = 4;
 };
 
-using remote_bounding_sphere = remote_composite<bounding_sphere_shell>;
+/// \brief A BOUNDSPH: any child with a known box goes in.
+class remote_bounding_sphere final : public remote_composite<bounding_sphere_shell> {
+    bool defers_bounded_children() const override { return true; }
+};
 
 // --- the shapes of stage 02 the student's code makes in the subject ----------------------
 

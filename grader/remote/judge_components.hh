@@ -10,13 +10,16 @@
 /// An intersection that comes back names the object hit by handle; the judge finds the
 /// stand-in of that handle, or the lent object, or (a part the subject's object made
 /// itself) makes a stand-in now.
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "calls_components.hh"
 #include "judge_connection.hh"
+#include "vl/composite_bases.hh"
 #include "vl/rt_base_objects.hh"
 
 namespace vl::remote {
@@ -175,6 +178,16 @@ public:
     }
 
     void insert(std::unique_ptr<rtab_component> child) override {
+        // A composite that takes any bounded child gets thousands of them (a BVH's budget
+        // scenes) in one crossing: a lent child with a known box waits here, in the
+        // mirror already, until the next call that reaches the subject's object.
+        if (defers_bounded_children() && child && dynamic_cast<remote_identity*>(child.get()) == nullptr &&
+            shapes::finite_box(*child) && pending_ < max_waiting) {
+            this->update();
+            this->children_.push_back(std::move(child));
+            ++pending_;
+            return;
+        }
         this->sync();
         message_writer w;
         w.put(this->id());
@@ -217,14 +230,37 @@ public:
     /// Mirrors the subject's composite's children again; `given` (may be null) is an
     /// object the test gave it outside insert() (make_transformed()'s child).
     void refresh(std::unique_ptr<rtab_component> given = nullptr) {
+        if (pending_.load() != 0) send_pending();
         if (given) kept_.push_back(std::move(given));
         mirror_children(this->id(), *this, kept_);
     }
 
 protected:
+    /// Sends the children insert() kept waiting, then what update() sends.
+    void sync() const final {
+        this->update();
+        if (pending_.load() != 0) {
+            // Threads that call at once (a test's four) send them once.
+            const std::lock_guard<std::mutex> lock(pending_mutex_);
+            if (pending_.load() != 0) const_cast<remote_composite*>(this)->send_pending();
+        }
+    }
+    /// What a stage's stand-in changed that the subject's object must know before its next
+    /// call (a scene file's leaf size, a matrix).
+    virtual void update() const {}
+    /// True for a composite whose insert() takes any child with a known box (a BVH, a
+    /// bounding sphere): its inserts of such children wait and cross together.
+    virtual bool defers_bounded_children() const { return false; }
+
     /// The subject's object `again` takes the place of this stand-in's (a scene file
     /// changed what the factory made): the old object's children go with it.
     void remake(handle again) {
+        // Children still waiting go to the object made again, as they came after the change.
+        std::vector<std::unique_ptr<rtab_component>> waiting;
+        for (std::size_t k = this->children_.size() - pending_.load(); k < this->children_.size(); ++k)
+            waiting.push_back(std::move(this->children_[k]));
+        this->children_.resize(this->children_.size() - waiting.size());
+        pending_ = 0;
         std::vector<std::unique_ptr<rtab_component>> old = std::move(this->children_);
         this->children_.clear();
         subject().call(calls_components::adopt, message_writer().put(this->id()).put(again),
@@ -232,6 +268,8 @@ protected:
         unlend_all(old);
         drop_retired();
         refresh();
+        for (auto& w : waiting) this->children_.push_back(std::move(w));
+        pending_ = waiting.size();
     }
     /// Keeps the children the stand-in holds alive, as the subject's object still holds
     /// them, while a scene file's reading clears children_ (see remake()).
@@ -246,6 +284,33 @@ protected:
     }
 
 private:
+    /// The last pending_ children, inserted here but not yet in the subject: one call.
+    void send_pending() {
+        // pending_ goes to 0 only once the subject has them: another thread that calls
+        // meanwhile waits for them at the lock in sync().
+        const std::size_t n = pending_;
+        message_writer w;
+        w.put(this->id()).put(static_cast<std::uint32_t>(n));
+        for (std::size_t k = this->children_.size() - n; k < this->children_.size(); ++k)
+            put_child(w, this->children_[k].get());
+        message_reader in;
+        try {
+            in = subject().call(calls_components::insert_each, w, "insert");
+        } catch (...) {
+            pending_ = 0;
+            refresh();  // what the subject's object took, before it refused one
+            throw;
+        }
+        pending_ = 0;
+        const auto count = in.get<std::uint32_t>();
+        const auto last = in.get<handle>();
+        in.finish();
+        if (count != this->children_.size() || (count != 0 && last != lend(this->children_.back().get()))) refresh();
+    }
+    /// The most children that wait: a crossing of a few MiB.
+    static constexpr std::size_t max_waiting = 16384;
+    std::atomic<std::size_t> pending_ = 0;
+    mutable std::mutex pending_mutex_;
     std::vector<std::unique_ptr<rtab_component>> kept_;  ///< given to the composite, not among its children
     std::vector<std::unique_ptr<rtab_component>> retired_;  ///< held by an object about to be made again
 };

@@ -464,6 +464,18 @@ void add_component_handlers(std::vector<handler>& table) {
         out.put(static_cast<std::uint32_t>(count))
             .put(count == 0 ? handle{0} : components().name(composite->children().back().get()));
     };
+    table[c::insert_each] = [](message_reader& in, message_writer& out) {
+        const auto h = in.get<handle>();
+        const auto n = in.get<std::uint32_t>();
+        if (n > c::max_batch) throw protocol_error("a batch of " + std::to_string(n) + " children");
+        rtab_component& parent = components().at(h);
+        for (std::uint32_t k = 0; k < n; ++k) parent.insert(read_child(in));
+        in.finish();
+        const auto* composite = dynamic_cast<const rtab_composite*>(&parent);
+        const std::size_t count = composite != nullptr ? composite->children().size() : 0;
+        out.put(static_cast<std::uint32_t>(count))
+            .put(count == 0 ? handle{0} : components().name(composite->children().back().get()));
+    };
     table[c::delete_all_children] = [](message_reader& in, message_writer&) {
         const auto h = in.get<handle>();
         in.finish();

@@ -78,8 +78,13 @@ scene_outcome render_and_compare(const render_program& render, const rubric_scen
     if (!r.succeeded() || r.report.empty() || r.report_overflow) {
         o.message = "the render " + (r.report_overflow ? std::string("wrote an image larger than ") +
                                                              std::to_string(limits.report_bytes >> 20) + " MiB"
-                                                       : r.describe(rq.limits.wall_seconds)) +
-                    "; the end of what your program printed:\n" + r.output_tail(500);
+                                                       : r.describe(rq.limits.wall_seconds));
+        // A hidden scene's render had the hidden file to read: what it printed could be the
+        // scene itself, so the report says how it ended and quotes none of it.
+        if (scene.is_public)
+            o.message += "; the end of what your program printed:\n" + r.output_tail(500);
+        else
+            o.message += " (what a render of a hidden scene prints is not shown)";
         return o;
     }
     // The renderer's bytes are decoded here and only the grader's own encoding of them is
