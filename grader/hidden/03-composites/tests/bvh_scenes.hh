@@ -161,11 +161,11 @@ inline double cpu_seconds(clockid_t clock) {
     return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
-/// A BVH of N random spheres and 500 rays through the cube, built by a first ray, whose
-/// passes time() times (the least of several passes' means is steady long before 500).
+/// A BVH of N random spheres and 250 rays through the cube, built by a first ray, whose
+/// passes time() times (the least of several passes' means is steady long before 250).
 class timed_bvh {
 public:
-    explicit timed_bvh(std::size_t n) : bvh_(make_bvh()), rays_(rays_through_cube(500, 19)) {
+    explicit timed_bvh(std::size_t n) : bvh_(make_bvh()), rays_(rays_through_cube(250, 19)) {
         random_spheres(set_, *bvh_, n, 17);
         (void)bvh_->intersect(rays_.front());  // builds the tree
     }
@@ -240,8 +240,8 @@ struct time_growth {
                "the subtrees the ray misses, and do the work on the thread that calls intersect()";
     }
 };
-/// Measured once per test program: passes at 1000 and at 64000 spheres by turns, five of
-/// each, and five more (up to twice) while the check fails, so that a burst of the
+/// Measured once per test program: passes at 1000 and at 64000 spheres by turns, three of
+/// each, and three more (up to twice) while the check fails, so that a burst of the
 /// machine's other load is not taken for the BVH's work. A tree's passes take
 /// milliseconds; once the passes have taken a second in all, the growth is clear (a list's),
 /// and the test says so instead of running out of time.
@@ -253,7 +253,7 @@ inline const time_growth& bvh_time_growth() {
         const auto spent = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
         const double process_start = cpu_seconds(CLOCK_PROCESS_CPUTIME_ID);
         for (int round = 0; round < 3 && !out.ok() && spent() < 1; ++round) {
-            for (int pass = 0; pass < 5 && (pass == 0 || spent() < 1); ++pass) {
+            for (int pass = 0; pass < 3 && (pass == 0 || spent() < 1); ++pass) {
                 small.time(out.small);
                 large.time(out.large);
             }
