@@ -73,9 +73,7 @@ struct description {
     std::uint8_t primitive = 0;  ///< 1 for a vl::primitive the subject may set a surface on
     point min, max;
     rtab_component::ball ball;
-    double zero_t = rtab_component::default_zero_t;
-    color clr;
-    double kdr = 0, ksr = 0, kdt = 0, kst = 0, n = 1, ior = 1;
+    surface surf;  ///< its surface getters' values, zero_t among them
 };
 
 /// How a child crosses with insert (and make_transformed): none (nullptr), one of the

@@ -19,13 +19,6 @@ namespace {
 using namespace vl::remote;
 namespace c = calls_02;
 
-/// Makes an object in the subject with the student's factory `op`; its handle.
-handle made(c::op op, const message_writer& args, const char* what) {
-    message_reader r = subject().call(op, args, what);
-    const auto h = r.get<handle>();
-    r.finish();
-    return h;
-}
 
 void put(message_writer& w, const point& p) { w.put(p); }
 void put(message_writer& w, const vector& v) { w.put(v); }
@@ -42,7 +35,7 @@ public:
     static std::unique_ptr<primitive> make(c::op op, const char* what, const Args&... args) {
         message_writer w;
         (put(w, args), ...);
-        const handle h = made(op, w, what);
+        const handle h = made_in_subject(op, w, what);
         auto s = std::make_unique<remote_shape>();
         s->set_geometry(args...);
         s->attach(h);
@@ -76,19 +69,19 @@ private:
 
 template <>
 handle remote_shape<shapes::sphere_base>::make_in_subject() const {
-    return made(c::make_sphere, message_writer().put(center_).put(radius_), "make_sphere");
+    return made_in_subject(c::make_sphere, message_writer().put(center_).put(radius_), "make_sphere");
 }
 template <>
 handle remote_shape<shapes::plane_base>::make_in_subject() const {
-    return made(c::make_plane, message_writer().put(point_).put(normal_), "make_plane");
+    return made_in_subject(c::make_plane, message_writer().put(point_).put(normal_), "make_plane");
 }
 template <>
 handle remote_shape<shapes::triangle_base>::make_in_subject() const {
-    return made(c::make_triangle, message_writer().put(a_).put(b_).put(c_), "make_triangle");
+    return made_in_subject(c::make_triangle, message_writer().put(a_).put(b_).put(c_), "make_triangle");
 }
 template <>
 handle remote_shape<shapes::polygon_base>::make_in_subject() const {
-    return made(c::make_polygon, message_writer().put_vector(vertices_), "make_polygon");
+    return made_in_subject(c::make_polygon, message_writer().put_vector(vertices_), "make_polygon");
 }
 
 }  // namespace

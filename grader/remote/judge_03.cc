@@ -26,18 +26,11 @@ using namespace vl::remote;
 namespace c = calls_03;
 namespace cc = calls_components;
 
-/// Makes an object in the subject with the student's factory `op`; its handle.
-handle made(c::op op, const message_writer& args, const char* what) {
-    message_reader r = subject().call(op, args, what);
-    const auto h = r.get<handle>();
-    r.finish();
-    return h;
-}
 
 /// Reads `text` (one object in the scene format) with the student's types: the object
 /// a scene file gave the judge's stand-in, made again in the subject.
 handle read_in_subject(const std::string& text) {
-    return made(c::read_object, message_writer().put_string(text), "the object read from a scene file");
+    return made_in_subject(c::read_object, message_writer().put_string(text), "the object read from a scene file");
 }
 
 /// `child`, which a refused call took, goes as it would have gone with the call.
@@ -127,7 +120,7 @@ private:
         message_writer w;
         put_child(w, nullptr);
         w.put(to_world_);
-        self->remake(made(c::make_transformed, w, "make_transformed"));
+        self->remake(made_in_subject(c::make_transformed, w, "make_transformed"));
     }
     static bool same(const matrix& a, const matrix& b) {
         for (int r = 0; r < 4; ++r)
@@ -163,7 +156,7 @@ private:
         if (leaf_size_ == sent_) return;
         auto* self = const_cast<remote_bvh*>(this);
         self->sent_ = leaf_size_;
-        self->remake(made(c::make_bvh, message_writer().put(leaf_size_), "make_bvh"));
+        self->remake(made_in_subject(c::make_bvh, message_writer().put(leaf_size_), "make_bvh"));
     }
     int sent_ = 4;
 };
@@ -214,14 +207,14 @@ const bool shapes_served = [] {
 }  // namespace
 
 std::unique_ptr<rtab_composite> make_bounding_sphere() {
-    const handle h = made(c::make_bounding_sphere, {}, "make_bounding_sphere");
+    const handle h = made_in_subject(c::make_bounding_sphere, {}, "make_bounding_sphere");
     auto s = std::make_unique<remote_bounding_sphere>();
     s->attach(h);
     return s;
 }
 
 std::unique_ptr<rtab_composite> make_frac_sphere(const point& center, double radius, int depth, double ratio) {
-    const handle h = made(c::make_frac_sphere, message_writer().put(center).put(radius).put(depth).put(ratio),
+    const handle h = made_in_subject(c::make_frac_sphere, message_writer().put(center).put(radius).put(depth).put(ratio),
                           "make_frac_sphere");
     auto s = std::make_unique<remote_frac_sphere>();
     s->set_values(center, radius, depth, ratio);
@@ -231,7 +224,7 @@ std::unique_ptr<rtab_composite> make_frac_sphere(const point& center, double rad
 }
 
 std::unique_ptr<rtab_composite> make_box(const point& lo, const point& hi) {
-    const handle h = made(c::make_box, message_writer().put(lo).put(hi), "make_box");
+    const handle h = made_in_subject(c::make_box, message_writer().put(lo).put(hi), "make_box");
     auto s = std::make_unique<remote_box>();
     s->set_corners(lo, hi);
     s->attach(h);
@@ -245,7 +238,7 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
     w.put(object_to_world);
     handle h = 0;
     try {
-        h = made(c::make_transformed, w, "make_transformed");
+        h = made_in_subject(c::make_transformed, w, "make_transformed");
     } catch (...) {
         lost(child);
         throw;
@@ -267,7 +260,7 @@ std::unique_ptr<rtab_composite> make_transformed(std::unique_ptr<rtab_component>
 }
 
 std::unique_ptr<rtab_composite> make_bvh(int leaf_size) {
-    const handle h = made(c::make_bvh, message_writer().put(leaf_size), "make_bvh");
+    const handle h = made_in_subject(c::make_bvh, message_writer().put(leaf_size), "make_bvh");
     auto s = std::make_unique<remote_bvh>();
     s->made_with(leaf_size);
     s->attach(h);

@@ -56,9 +56,7 @@ private:
 std::unique_ptr<tracer> make_whitted_tracer(const scene& s) {
     message_writer w;
     put_scene(w, s);
-    message_reader in = subject().call(c::make_whitted_tracer, w, "make_whitted_tracer");
-    const auto h = in.get<handle>();
-    in.finish();
+    const handle h = made_in_subject(c::make_whitted_tracer, w, "make_whitted_tracer");
     if (h == 0) return nullptr;
     return std::make_unique<remote_tracer>(h, s);
 }

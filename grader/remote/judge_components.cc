@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "grading.hh"
+#include "surfaces.hh"
 #include "vl/primitive.hh"
 
 namespace vl::remote {
@@ -258,6 +259,13 @@ std::vector<handler> lent_handlers() {
 
 }  // namespace
 
+handle made_in_subject(op_id op, const message_writer& args, const char* what) {
+    message_reader r = subject().call(op, args, what);
+    const auto h = r.get<handle>();
+    r.finish();
+    return h;
+}
+
 void enter_stand_in(handle h, const rtab_component* stand_in) {
     const std::lock_guard<std::mutex> lock(table().mutex);
     table().by_handle[h] = stand_in;
@@ -319,14 +327,7 @@ description describe(const rtab_component& o) {
     d.min = o.min_point();
     d.max = o.max_point();
     d.ball = o.bounding_ball();
-    d.zero_t = o.zero_t();
-    d.clr = o.clr();
-    d.kdr = o.kdr();
-    d.ksr = o.ksr();
-    d.kdt = o.kdt();
-    d.kst = o.kst();
-    d.n = o.n();
-    d.ior = o.ior();
+    d.surf = grading::surface_of(o);
     return d;
 }
 

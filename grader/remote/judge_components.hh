@@ -43,6 +43,10 @@ struct surface_values {
 surface_values surface_of(handle h);
 }  // namespace component_calls
 
+/// Makes an object in the subject with the student's factory `op` (its arguments `args`;
+/// `what` names it for a student); its handle (0: the factory returned nullptr).
+handle made_in_subject(op_id op, const message_writer& args, const char* what);
+
 /// Records that `stand_in` stands for the subject's object `h` (until forget()).
 void enter_stand_in(handle h, const rtab_component* stand_in);
 void forget_stand_in(handle h);

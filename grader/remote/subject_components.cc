@@ -176,14 +176,14 @@ template <class Base>
 class lent_with_surface final : public lent_common<Base> {
 public:
     using lent_common<Base>::lent_common;
-    double zero_t() const override { return this->described().zero_t; }
-    color clr() const override { return this->described().clr; }
-    double kdr() const override { return this->described().kdr; }
-    double ksr() const override { return this->described().ksr; }
-    double kdt() const override { return this->described().kdt; }
-    double kst() const override { return this->described().kst; }
-    double n() const override { return this->described().n; }
-    double ior() const override { return this->described().ior; }
+    double zero_t() const override { return this->described().surf.zero_t; }
+    color clr() const override { return this->described().surf.clr; }
+    double kdr() const override { return this->described().surf.kdr; }
+    double ksr() const override { return this->described().surf.ksr; }
+    double kdt() const override { return this->described().surf.kdt; }
+    double kst() const override { return this->described().surf.kst; }
+    double n() const override { return this->described().surf.n; }
+    double ior() const override { return this->described().surf.ior; }
 };
 
 /// A lent primitive: a vl::primitive whose surface starts as described and is the
@@ -192,16 +192,7 @@ class lent_primitive final : public lent_common<primitive> {
 public:
     lent_primitive(handle h, std::string type, const description& d, bool made)
         : lent_common<primitive>(h, std::move(type), d, made) {
-        surface s;
-        s.clr = d.clr;
-        s.kdr = d.kdr;
-        s.ksr = d.ksr;
-        s.kdt = d.kdt;
-        s.kst = d.kst;
-        s.n = d.n;
-        s.ior = d.ior;
-        s.zero_t = d.zero_t;
-        set_surface(s);
+        set_surface(d.surf);
     }
 };
 
