@@ -92,6 +92,14 @@ const rtab_component* lent_object(handle h) {
     return it == t.by_handle.end() ? nullptr : it->second;
 }
 
+/// The stand-in of `h` when the judge has one, else nullptr.
+const rtab_component* known_stand_in(handle h) {
+    stand_in_table& t = table();
+    const std::lock_guard<std::mutex> lock(t.mutex);
+    const auto it = t.by_handle.find(h);
+    return it == t.by_handle.end() ? nullptr : it->second;
+}
+
 /// The stand-in of `h`, made now if the judge has none; a lent handle names the judge's
 /// own object.
 const rtab_component* stand_in_of(handle h) {
@@ -101,25 +109,14 @@ const rtab_component* stand_in_of(handle h) {
         static const nothing_there* const missing = new nothing_there();
         return missing;
     }
+    if (const rtab_component* known = known_stand_in(h)) return known;
     stand_in_table& t = table();
-    {
-        const std::lock_guard<std::mutex> lock(t.mutex);
-        if (const auto it = t.by_handle.find(h); it != t.by_handle.end()) return it->second;
-    }
     auto made = std::make_unique<remote_component<borrowed>>();
     made->attach(h, false);
     const std::lock_guard<std::mutex> lock(t.mutex);
     const rtab_component* p = made.get();
     t.borrowed_ones[h] = std::move(made);
     return p;
-}
-
-/// The stand-in of `h` when the judge has one, else nullptr.
-const rtab_component* known_stand_in(handle h) {
-    stand_in_table& t = table();
-    const std::lock_guard<std::mutex> lock(t.mutex);
-    const auto it = t.by_handle.find(h);
-    return it == t.by_handle.end() ? nullptr : it->second;
 }
 
 /// Calls `op` on the object `h` with `args` and reads its one result of type T.
