@@ -58,8 +58,8 @@ private:
 
 struct stand_in_table {
     std::mutex mutex;
-    std::map<handle, const rtab_component*> by_handle;
-    std::map<handle, std::unique_ptr<remote_component<borrowed>>> borrowed_ones;
+    std::unordered_map<handle, const rtab_component*> by_handle;
+    std::unordered_map<handle, std::unique_ptr<remote_component<borrowed>>> borrowed_ones;
 };
 
 stand_in_table& table() {
@@ -330,13 +330,12 @@ description describe(const rtab_component& o) {
 
 handle keep_made(std::unique_ptr<rtab_component> made) {
     lent_table& t = lent();
-    {
-        const std::lock_guard<std::mutex> lock(t.mutex);
-        if (t.made.size() >= c::max_made)
-            throw protocol_error("your code had the judge make more than " + std::to_string(c::max_made) + " objects");
-    }
-    const handle h = lend(made.get());
     const std::lock_guard<std::mutex> lock(t.mutex);
+    if (t.made.size() >= c::max_made)
+        throw protocol_error("your code had the judge make more than " + std::to_string(c::max_made) + " objects");
+    const handle h = lent_bit | ++t.last;  // a new object: lent under no root
+    t.by_handle[h] = made.get();
+    t.by_object[made.get()] = h;
     t.made[h] = std::move(made);
     return h;
 }

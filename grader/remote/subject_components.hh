@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <unordered_map>
 
 #include "calls_components.hh"
 #include "subject.hh"
@@ -46,9 +47,9 @@ private:
     /// Forgets the handles of `object`'s children and theirs (it is going).
     void forget_parts_locked(const rtab_component& object);
     mutable std::mutex mutex_;
-    std::map<handle, const rtab_component*> by_handle_;
-    std::map<const rtab_component*, handle> by_address_;
-    std::map<handle, std::unique_ptr<rtab_component>> owned_;
+    std::unordered_map<handle, const rtab_component*> by_handle_;
+    std::unordered_map<const rtab_component*, handle> by_address_;
+    std::unordered_map<handle, std::unique_ptr<rtab_component>> owned_;
 };
 
 /// The objects of this subject.
