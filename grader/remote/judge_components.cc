@@ -1,7 +1,6 @@
 #include "judge_components.hh"
 
 #include <algorithm>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <span>
@@ -273,10 +272,10 @@ void forget_stand_in(handle h) {
     table().by_handle.erase(h);
 }
 
-handle lend(const rtab_component* o, handle root) {
-    if (o == nullptr) return 0;
-    lent_table& t = lent();
-    const std::lock_guard<std::mutex> lock(t.mutex);
+namespace {
+
+/// lend() with `t`'s mutex held.
+handle lend_locked(lent_table& t, const rtab_component* o, handle root) {
     if (const auto it = t.by_object.find(o); it != t.by_object.end()) return it->second;
     const handle h = lent_bit | ++t.last;
     t.by_handle[h] = o;
@@ -286,6 +285,15 @@ handle lend(const rtab_component* o, handle root) {
         t.root[h] = root;
     }
     return h;
+}
+
+}  // namespace
+
+handle lend(const rtab_component* o, handle root) {
+    if (o == nullptr) return 0;
+    lent_table& t = lent();
+    const std::lock_guard<std::mutex> lock(t.mutex);
+    return lend_locked(t, o, root);
 }
 
 void unlend(const rtab_component* o) noexcept {
@@ -333,9 +341,7 @@ handle keep_made(std::unique_ptr<rtab_component> made) {
     const std::lock_guard<std::mutex> lock(t.mutex);
     if (t.made.size() >= c::max_made)
         throw protocol_error("your code had the judge make more than " + std::to_string(c::max_made) + " objects");
-    const handle h = lent_bit | ++t.last;  // a new object: lent under no root
-    t.by_handle[h] = made.get();
-    t.by_object[made.get()] = h;
+    const handle h = lend_locked(t, made.get(), 0);
     t.made[h] = std::move(made);
     return h;
 }

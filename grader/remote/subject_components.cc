@@ -1,5 +1,6 @@
 #include "subject_components.hh"
 
+#include <map>
 #include <sstream>
 #include <string>
 #include <unordered_map>

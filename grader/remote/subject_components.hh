@@ -4,7 +4,6 @@
 /// the student's code made, by handle, the handlers that call their members, and the
 /// stand-ins of the objects the judge lends (a test's probe inside the student's
 /// composite), whose tests are calls back to the judge.
-#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
