@@ -62,10 +62,23 @@ enum lent_op : op_id {
     make_lent_plane,       ///< point, vector -> handle, description
     make_lent_triangle,    ///< point, point, point -> handle, description
     make_lent_polygon,     ///< vector of points -> handle, description
+    posted_sphere,         ///< (posted: no answer) handle chosen by the subject, point, double
 };
 
 /// The handle of a lent object has this bit set.
 inline constexpr handle lent_bit = handle{1} << 63;
+
+/// \brief A sphere the student's code makes is posted, not called.
+///
+/// A FRACSPH of depth 7 makes 117 187 spheres, and its code reads each one's box as soon
+/// as it has made it. So make_sphere() in the subject checks its arguments as the
+/// framework's shapes::sphere_base::check() does, gives the sphere a handle of its own
+/// choosing (lent_bit and posted_bit set: the judge's own handles never have posted_bit),
+/// knows its box and ball (centre, radius) and the default surface as the judge's sphere
+/// will, and posts `posted_sphere`: the judge makes the reference's sphere under that
+/// handle before it reads anything the subject sends after. A handle posted twice, or
+/// one without both bits, breaks the connection.
+inline constexpr handle posted_bit = handle{1} << 62;
 
 /// What the subject's stand-in of a lent object knows of it without asking.
 struct description {

@@ -187,6 +187,33 @@ void endpoint::serve_call(frame& f) {
     send(answer, f.number, result.bytes());
 }
 
+void endpoint::serve_post(frame& f) {
+    std::string failed;
+    try {
+        const auto op = f.body.get<op_id>();
+        if (op >= handlers_.size() || !handlers_[op]) throw protocol_error("a post of unknown operation " + std::to_string(op));
+        message_writer dropped;
+        handlers_[op](f.body, dropped);
+    } catch (const std::exception& e) {
+        failed = e.what();
+    } catch (...) {
+        failed = "an exception that is not a std::exception";
+    }
+    if (!failed.empty()) broken(peer_ + " sent a call that awaits no answer and failed: " + failed);
+}
+
+void endpoint::post(op_id op, const message_writer& args) {
+    if (!broken_.empty()) throw protocol_error(broken_);
+    const std::vector<char>& a = args.bytes();
+    std::vector<char> body(sizeof op + a.size());
+    std::memcpy(body.data(), &op, sizeof op);
+    if (!a.empty()) std::memcpy(body.data() + sizeof op, a.data(), a.size());
+    if (body.size() + header_bytes + sizeof(std::uint32_t) > max_message_bytes)
+        throw protocol_error("a message of " + std::to_string(body.size()) + " bytes is too large to send");
+    if (queued_.size() + body.size() + header_bytes + sizeof(std::uint32_t) > max_message_bytes) flush();
+    queue(kind::post, 0, body);
+}
+
 message_reader endpoint::call(op_id op, const message_writer& args, const char* what) {
     if (!broken_.empty()) throw protocol_error(broken_);
     const std::uint64_t number = ++next_call_;
@@ -200,6 +227,7 @@ message_reader endpoint::call(op_id op, const message_writer& args, const char* 
         if (!receive(f)) broken(peer_ + " ended (it crashed or ended itself) while answering " + what);
         switch (f.k) {
             case kind::call: serve_call(f); break;
+            case kind::post: serve_post(f); break;
             case kind::release:
                 if (on_release) on_release(f.body.get<handle>());
                 break;
@@ -236,6 +264,7 @@ void endpoint::serve() {
         if (!receive(f)) return;
         switch (f.k) {
             case kind::call: serve_call(f); break;
+            case kind::post: serve_post(f); break;
             case kind::release:
                 if (on_release) on_release(f.body.get<handle>());
                 break;

@@ -85,6 +85,13 @@ public:
     /// never throws: a destructor calls it).
     void release(handle h) noexcept;
 
+    /// Calls `op` at the other end with `args` and awaits no answer: the frame goes with
+    /// the next one sent (as a release does), and the other end serves it before any
+    /// frame sent after it. If it throws there, the other end's endpoint breaks for good,
+    /// saying what the call was: a post is for calls that cannot fail when the caller
+    /// keeps the contract (the subject's make_sphere(), checked here first).
+    void post(op_id op, const message_writer& args);
+
     /// Serves calls until the other end goes (returns), or breaks the protocol (throws
     /// protocol_error). The subject's main loop.
     void serve();
@@ -97,7 +104,7 @@ public:
     std::function<void(handle)> on_release;
 
 private:
-    enum class kind : std::uint8_t { call = 1, result = 2, thrown = 3, release = 4 };
+    enum class kind : std::uint8_t { call = 1, result = 2, thrown = 3, release = 4, post = 5 };
     struct frame {
         kind k{};
         std::uint64_t number = 0;
@@ -113,6 +120,8 @@ private:
     /// Puts what is queued in the box.
     void flush();
     void serve_call(frame& f);
+    /// Serves a post: its answer is dropped; its exception breaks the endpoint.
+    void serve_post(frame& f);
     [[noreturn]] void broken(const std::string& why);
     /// Waits until the incoming box holds a frame not yet read; false when the other end
     /// has gone.

@@ -185,6 +185,13 @@ const bool shapes_served = [] {
         in.finish();
         serve_made(stage02::make_sphere(center, radius), out);
     };
+    h[cc::posted_sphere] = [](message_reader& in, message_writer&) {
+        const auto made_as = in.get<handle>();
+        const auto center = in.get<point>();
+        const auto radius = in.get<double>();
+        in.finish();
+        keep_made_as(made_as, stage02::make_sphere(center, radius));
+    };
     h[cc::make_lent_plane] = [](message_reader& in, message_writer& out) {
         const auto p = in.get<point>();
         const auto n = in.get<vector>();

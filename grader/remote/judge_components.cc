@@ -346,6 +346,20 @@ handle keep_made(std::unique_ptr<rtab_component> made) {
     return h;
 }
 
+void keep_made_as(handle h, std::unique_ptr<rtab_component> made) {
+    if ((h & lent_bit) == 0 || (h & c::posted_bit) == 0)
+        throw protocol_error("your code's process named a sphere it made with a handle it may not choose");
+    lent_table& t = lent();
+    const std::lock_guard<std::mutex> lock(t.mutex);
+    if (t.made.size() >= c::max_made)
+        throw protocol_error("your code had the judge make more than " + std::to_string(c::max_made) + " objects");
+    if (t.by_handle.contains(h))
+        throw protocol_error("your code's process named two objects with one handle");
+    t.by_handle[h] = made.get();
+    t.by_object[made.get()] = h;
+    t.made[h] = std::move(made);
+}
+
 void released_by_subject(handle h) {
     if ((h & lent_bit) == 0) return;
     std::unique_ptr<rtab_component> gone;

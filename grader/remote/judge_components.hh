@@ -65,6 +65,10 @@ description describe(const rtab_component& o);
 /// Keeps `made`, an object the subject had the judge make, under a new lent handle until
 /// the subject releases it or a composite's children take it over; its handle.
 handle keep_made(std::unique_ptr<rtab_component> made);
+/// As keep_made(), under the handle `h` the subject chose for it (a posted make:
+/// calls_components::posted_bit); throws protocol_error for a handle without lent_bit and
+/// posted_bit, or one already in use.
+void keep_made_as(handle h, std::unique_ptr<rtab_component> made);
 /// The handlers of the subject's calls (calls_components::lent_op), to which a stage's
 /// judge adds its own (the other stages' factories) before the first test.
 std::vector<handler>& judge_handlers();

@@ -416,6 +416,10 @@ std::unique_ptr<primitive> made_by_judge(message_reader& answer) {
     return std::make_unique<lent_primitive>(h, std::move(type), d, true);
 }
 
+std::unique_ptr<primitive> made_by_judge(handle h, std::string type, const description& d) {
+    return std::make_unique<lent_primitive>(h, std::move(type), d, true);
+}
+
 void add_component_handlers(std::vector<handler>& table) {
     table.resize(c::table_size);
     table[c::intersect] = [](message_reader& in, message_writer& out) {

@@ -70,5 +70,8 @@ std::unique_ptr<object_list> lent_list(handle h, std::string type, const descrip
 /// as the subject of a later stage has them): `h` and its type and description as the
 /// judge answered. It is a vl::primitive, whose surface the student's code may set.
 std::unique_ptr<primitive> made_by_judge(message_reader& answer);
+/// The same stand-in, for an object the subject described itself and posted
+/// (calls_components::posted_bit).
+std::unique_ptr<primitive> made_by_judge(handle h, std::string type, const description& d);
 
 }  // namespace vl::remote

@@ -1,6 +1,10 @@
 #include "grade.hh"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -21,6 +25,34 @@ namespace vl::grader {
 namespace fs = std::filesystem;
 
 namespace {
+
+/// Calls `each(items[k])` for every k from `first`, `jobs` at a time (each item on one
+/// thread), and returns when all are done. The first exception one throws (a grader
+/// failure) stops the others from starting more and is rethrown here.
+template <class item, class work>
+void run_side_by_side(std::vector<item>& items, std::size_t first, int jobs, const work& each) {
+    std::atomic<std::size_t> next = first;
+    std::atomic<bool> failed = false;
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    auto worker = [&] {
+        for (std::size_t k; !failed && (k = next++) < items.size();) {
+            try {
+                each(items[k]);
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(failure_mutex);
+                if (!failure) failure = std::current_exception();
+                failed = true;
+            }
+        }
+    };
+    {
+        std::vector<std::jthread> workers;
+        for (int t = 1; t < std::max(jobs, 1); ++t) workers.emplace_back(worker);
+        worker();
+    }
+    if (failure) std::rethrow_exception(failure);
+}
 
 std::string now_utc() {
     const std::time_t t = std::time(nullptr);
@@ -227,12 +259,13 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
         g.items[0].result = b.ok ? item_result::passed : b.refused ? item_result::refused : item_result::failed;
         g.items[0].message = b.ok ? "" : b.errors;
         if (b.ok) {
-            for (std::size_t k = 1; k < g.items.size(); ++k) {
-                graded_item& i = g.items[k];
+            // Each item is one run (or a judge and a subject) of its own, so items run side
+            // by side, options.item_jobs at a time; each writes only its own item.
+            auto grade_item = [&](graded_item& i) {
                 if (left() < 1) {
                     i.message = "not run: the time budget of this grade (" +
                                 std::to_string(static_cast<int>(r.grade_budget_seconds)) + " s) was spent";
-                    continue;
+                    return;
                 }
                 if (i.what == graded_item::kind::test) {
                     run_limits limits = r.test_limits;
@@ -276,7 +309,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     i.highlight_image = o.highlight;
                     if (!o.flip_map.empty()) i.flip_mean = o.flip_mean;
                 }
-            }
+            };
+            run_side_by_side(g.items, 1, options.item_jobs, grade_item);
         }
         if (b.ok)
             for (const rubric_chart& c : r.charts) {

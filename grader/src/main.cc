@@ -26,9 +26,9 @@ struct command {
 const std::vector<command>& commands() {
     static const std::vector<command> table = {
         {"demo", "demo", "grade the bundled sample submissions and print where their reports are", demo_command},
-        {"grade", "grade ASSIGNMENT SUBMISSION [--out DIR] [--weaker-sandbox] [--keep-work]",
+        {"grade", "grade ASSIGNMENT SUBMISSION [--out DIR] [--jobs N] [--weaker-sandbox] [--keep-work]",
          "grade one submission (a folder, a student kit, or a .zip/.tar.gz of one); writes DIR/results.json "
-         "and DIR/report.html",
+         "and DIR/report.html; --jobs N runs N tests and scenes at once (default: one per two CPUs, at most 4)",
          grade_command},
         {"roster", "roster ASSIGNMENT DIR [-j N] [--out DIR] [--regrade NAME...] [--shard K/N] [--weaker-sandbox]",
          "grade every submission in DIR (one folder or archive per student), N at once (default: one per CPU), "
@@ -45,7 +45,7 @@ const std::vector<command>& commands() {
          "write a Gradescope autograder bundle that grades ASSIGNMENT (setup.sh builds it, run_autograder grades)",
          gradescope_command},
         {"list", "list", "the assignments this build can grade", list_command},
-        {"calibrate", "calibrate CASE_DIR [--out DIR] [--no-policy] [--limits-scale F]",
+        {"calibrate", "calibrate CASE_DIR [--out DIR] [--jobs N] [--no-policy] [--limits-scale F]",
          "grade one calibration or attack case (grader/tests/submissions/NN-name/CASE, grader/tests/adversarial/...) "
          "and check it against its expected.toml; --no-policy tests the sandbox alone ([sandbox] in expected.toml); "
          "--limits-scale F (0 < F <= 1) grades with the rubric's test and render time limits times F, so an endless "

@@ -68,7 +68,7 @@ one() {
   name="$(basename "$(dirname "$case_dir")")/$(basename "$case_dir")${flag:+ (the sandbox alone)}"
   local dir="$out/$(basename "$(dirname "$case_dir")")-$(basename "$case_dir")${flag:+-sandbox}"
   local start=$SECONDS
-  timeout --kill-after=10 600 "$grader" calibrate "$case_dir" --out "$dir" --limits-scale "$scale" $flag >"$dir.log" 2>&1
+  timeout --kill-after=10 600 "$grader" calibrate "$case_dir" --out "$dir" --limits-scale "$scale" --jobs 1 $flag >"$dir.log" 2>&1
   local status=$?
   local verdict="ok"
   [ $status -eq 0 ] || verdict="FAILED"
