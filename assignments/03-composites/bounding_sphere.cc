@@ -9,10 +9,12 @@
 namespace vl::stage03 {
 
 void bounding_sphere::insert([[maybe_unused]] std::unique_ptr<rtab_component> child) {
-    // TODO: refuse a child whose box is unknown (vl::shapes::finite_box() says whether it
-    // is known) with a vl::usage_error that names both types and says what to do (put it
-    // beside the BOUNDSPH in a LIST). The base class's rtab_composite::insert() refuses a
-    // null pointer and the sphere itself; then adopt() the child.
+    // TODO: first the refusals every composite shares: check_insertable(child.get())
+    // (rtab_composite's) throws for a null pointer and for the sphere itself. Then refuse
+    // a child whose box is unknown (vl::shapes::finite_box() says whether it is known)
+    // with a vl::usage_error that names both types and says what to do (put it beside the
+    // BOUNDSPH in a LIST). Then adopt() the child, which adds it and grows the sphere.
+    // (Not rtab_composite::insert(): that adds the child to children_ itself.)
     throw not_implemented_error();
 }
 

@@ -24,9 +24,13 @@ void rtab_component::delete_all_children() {
     throw usage_error(type_name() + " has no children to delete: delete_all_children() is for composites");
 }
 
+void rtab_composite::check_insertable(const rtab_component* child) const {
+    if (child == nullptr) throw usage_error(type_name() + ": insert() was given no object (a null pointer)");
+    if (child == this) throw usage_error(type_name() + ": a composite cannot contain itself");
+}
+
 void rtab_composite::insert(std::unique_ptr<rtab_component> child) {
-    if (!child) throw usage_error(type_name() + ": insert() was given no object (a null pointer)");
-    if (child.get() == this) throw usage_error(type_name() + ": a composite cannot contain itself");
+    check_insertable(child.get());
     children_.push_back(std::move(child));
 }
 

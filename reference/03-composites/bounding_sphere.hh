@@ -14,15 +14,12 @@ class bounding_sphere : public shapes::bounding_sphere_base {
 public:
     /// Refuses a child with an unknown box; then the sphere grows around the new child.
     void insert(std::unique_ptr<rtab_component> child) override {
-        if (child && child.get() != this && !shapes::finite_box(*child))
+        check_insertable(child.get());  // a null pointer, the sphere itself
+        if (!shapes::finite_box(*child))
             throw usage_error(type_name() + " cannot hold " + child->type_name() +
                               ": its box is unknown (it is unbounded or empty), so no sphere can hold it;"
                               " put it beside the " + type_name() + " in a LIST");
-        rtab_composite::insert(std::move(child));  // refuses a null pointer and the sphere itself
-        // The child is in: grow the box and the sphere around it.
-        std::unique_ptr<rtab_component> last = std::move(children_.back());
-        children_.pop_back();
-        adopt(std::move(last));
+        adopt(std::move(child));  // the sphere grows around it
     }
 
 protected:

@@ -149,6 +149,12 @@ protected:
     rtab_composite() : rtab_component(true) {}
     /// The nearest primitive hit among all children (no bound: a miss is a miss).
     intersection nearest_child_hit(const ray& r) const;
+    /// The refusals every composite's insert() shares: throws vl::usage_error for no
+    /// object (a null pointer) and for this composite itself. The default insert() calls
+    /// it and appends; a composite whose insert() keeps its children its own way (a
+    /// bounding sphere that grows around each) calls it first, adds its own refusals,
+    /// then keeps the child.
+    void check_insertable(const rtab_component* child) const;
 
     std::vector<std::unique_ptr<rtab_component>> children_;  ///< the owned children, in insertion order
 };
