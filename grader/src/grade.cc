@@ -54,6 +54,15 @@ void run_side_by_side(std::vector<item>& items, std::size_t first, int jobs, con
     if (failure) std::rethrow_exception(failure);
 }
 
+/// The margins a passed test reported (grading::margin(): "vl-margin TEXT" warnings),
+/// one per line.
+std::string margins_of(const std::vector<std::string>& warnings) {
+    std::string out;
+    for (const std::string& w : warnings)
+        if (w.starts_with("vl-margin ")) out += (out.empty() ? "" : "\n") + w.substr(10, 600);
+    return out;
+}
+
 std::string now_utc() {
     const std::time_t t = std::time(nullptr);
     char buf[32];
@@ -273,6 +282,8 @@ graded_submission grade(const installation& in, const stage_info& stage, const f
                     const test_outcome o = run_graded_test(b.tests, i.test, limits, caps);
                     i.result = o.result;
                     i.message = o.message;
+                    // A passed budget says by how much (grading::margin(), from the judge).
+                    if (o.result == item_result::passed) i.message = margins_of(o.warnings);
                     if (i.kit_passes && i.message.empty())
                         i.message = "the untouched stubs pass this test too (it checks what the kit supplies), "
                                     "so it is worth no points";

@@ -15,6 +15,34 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// A chart in one line, for a report read as text: each series' value at the largest x
+/// it reaches, the submission's beside the reference's.
+std::string chart_summary(const graded_chart& c) {
+    if (c.mine.empty()) return {};
+    auto last = [](const std::vector<chart_point>& points, const std::string& series) {
+        const chart_point* best = nullptr;
+        for (const chart_point& p : points)
+            if (p.series == series && (best == nullptr || p.x > best->x)) best = &p;
+        return best;
+    };
+    std::vector<std::string> order;
+    for (const chart_point& p : c.mine)
+        if (std::find(order.begin(), order.end(), p.series) == order.end()) order.push_back(p.series);
+    auto g = [](double v) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.4g", v);
+        return std::string(buf);
+    };
+    std::string out = "At the right end of the chart, yours (the reference's):";
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        const chart_point* m = last(c.mine, order[k]);
+        const chart_point* r = last(c.reference, order[k]);
+        out += (k == 0 ? " " : "; ") + order[k] + " at " + g(m->x) + ": " + g(m->y);
+        if (r != nullptr) out += " (" + g(r->y) + (r->x != m->x ? " at " + g(r->x) : "") + ")";
+    }
+    return out + ".";
+}
+
 std::string escape(const std::string& s) {
     std::string out;
     for (const char c : s) {
@@ -147,7 +175,9 @@ std::string report_html(const graded_submission& g) {
             if (std::find(i.tags.begin(), i.tags.end(), "public") != i.tags.end())
                 h << " <small>(a public test: in your tests/)</small>";
             if (!i.passed() && !i.message.empty() && g.built) h << "<pre>" << escape(i.message) << "</pre>";
-            if (i.passed() && i.kit_passes) h << "<br><small>" << escape(i.message) << "</small>";
+            // A passed test's message: the kit passes it too, or a budget's margin.
+            if (i.passed() && i.what == graded_item::kind::test && !i.message.empty())
+                h << "<br><small>" << escape(i.message) << "</small>";
             if (i.what == graded_item::kind::scene && g.built) {
                 if (i.passed()) h << "<br><small>" << escape(i.message) << "</small>";
                 h << "<div class=\"figures\" title=\"click to enlarge\">" << image_tag(i.image, "this submission")
@@ -168,11 +198,13 @@ std::string report_html(const graded_submission& g) {
         for (const graded_chart& c : g.charts) {
             h << "<h3>" << escape(c.title) << "</h3>\n";
             if (!c.message.empty()) h << "<p class=\"meta\">" << escape(c.message) << "</p>\n";
+            if (const std::string line = chart_summary(c); !line.empty()) h << "<p>" << escape(line) << "</p>\n";
             h << chart_tag(c.svg, "gnuplot is not installed; the numbers are in " + c.tsv.filename().string());
         }
     }
-    h << "<h2>How this was graded</h2>\n<p class=\"meta\">Hidden tests ran one per process; only Catch2's "
-         "report of each test counts, never what the program printed. Sandbox: "
+    h << "<h2>How this was graded</h2>\n<p class=\"meta\">Each test ran on its own, decided by the grader's "
+         "own process (the judge) while your code ran in another (the subject), each call between them crossing "
+         "as data; only the judge's Catch2 report of each test counts, never what a program printed. Sandbox: "
       << escape(g.sandbox)
       << ".</p>\n"
          // A click on a scene's images shows all four large, pixels as squares (a half-pixel

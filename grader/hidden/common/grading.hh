@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <initializer_list>
 #include <span>
@@ -76,6 +77,20 @@ inline void chart_point(const std::string& series, double x, double y) {
     SUCCEED();
 }
 ///@}
+
+/// What a budget test measured against its limit, in the student's words ("12.3 of the 30
+/// primitive tests per ray allowed"): the report shows it beside a test that passed, so a
+/// student sees the margin as well as the verdict (a failure says it in its message).
+inline void margin(const std::string& text) {
+    WARN("vl-margin " << text);
+    SUCCEED();
+}
+/// `x` to three significant digits, for a margin (a measure, not a value to compare).
+inline std::string about(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", x);
+    return buf;
+}
 
 /// \name Asking many objects at once
 /// In the grader the student's objects live in another process (grader/README.md, "Who

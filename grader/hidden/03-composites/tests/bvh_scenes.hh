@@ -308,6 +308,13 @@ inline void check_budget(const std::string& scene, std::size_t n, const sweep_co
     // The counts above mean something only when they are the work.
     const time_growth& g = bvh_time_growth();
     VL_EXPECT(g.ok(), "the budgets of the BVH of " << scene << " cannot be met by counts alone: " << g.words());
+    // What passed, and by how much: shown beside the test in the report.
+    const auto a = grading::about;
+    grading::margin("N = " + std::to_string(n) + ", per ray over " + std::to_string(c.rays) + " rays: " +
+                    a(c.primitive) + " primitive tests of the " + a(prim_budget) + " allowed (" + a(prim_per_log) +
+                    " log2 N), " + a(c.bounding) + " box tests of " + a(bv_budget) + " (" + a(bv_per_log) +
+                    " log2 N), " + a(c.total) + " tests in all of " + a(total_budget) + " (" + a(factor) +
+                    " times the reference BVH's " + a(reference_total) + ")");
     VL_EXPECT(c.total <= total_budget, "the BVH of " << scene << " (N = " << n << ") may make at most " << num(factor)
                                                      << " times the reference BVH's " << num(reference_total)
                                                      << " tests per ray, " << num(total_budget) << measured
