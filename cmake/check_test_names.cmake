@@ -3,7 +3,10 @@
 # Fails when a Catch2 TEST_CASE name holds a character that breaks catch_discover_tests:
 # ';' (CMake splits the name into two tests) or '[' and ']' (Catch2 reads them as tags),
 # or when two test cases of one file share a name. Either fault makes a test vanish from
-# ctest, or pass without running, with no other sign.
+# ctest, or pass without running, with no other sign. In a test a student runs (the
+# public tests in assignments/, the hidden ones in grader/hidden/) a ',' fails too: Catch2
+# reads it as "or", so a student who pastes the name runs other tests or none (the built
+# programs are checked the same way by tools/check-test-names).
 cmake_minimum_required(VERSION 3.25)
 set(root ${CMAKE_ARGV3})
 file(GLOB_RECURSE files ${root}/framework/*.cc ${root}/pieces/*.cc ${root}/assignments/*.cc ${root}/grader/hidden/*.cc ${root}/grader/tests/*.cc ${root}/bench/*.cc)
@@ -17,6 +20,10 @@ foreach(f ${files})
     set(name "${CMAKE_MATCH_1}")
     if(name MATCHES "[][]")
       string(APPEND bad "${f}: test name has '[' or ']': ${name}\n")
+    endif()
+    string(FIND "${name}" "," comma)
+    if(NOT comma EQUAL -1 AND f MATCHES "/(assignments|grader/hidden)/")
+      string(APPEND bad "${f}: test name has ',' (Catch2 reads it as \"or\"): ${name}\n")
     endif()
     string(FIND "${name}" ";" semicolon)
     if(NOT semicolon EQUAL -1)

@@ -62,7 +62,7 @@ void check_chart(const std::vector<chart_point>& points, const std::set<std::str
 }  // namespace
 
 TEST_CASE("the stage 01 chart test reports FLIP at 1 to 64 samples per pixel for each pattern, the same every run", "[charts]") {
-    const std::string name = "chart: samplers: LDR-FLIP against the converged picture as samples per pixel grow; per pattern";
+    const std::string name = "chart: samplers: LDR-FLIP against the converged picture as samples per pixel grow - per pattern";
     const std::vector<chart_point> points = points_of(VL_TRUSTED_01, name);
     check_chart(points, {"center", "grid", "jittered", "random"}, {1, 2, 4, 8, 16, 32, 64});
     // The reference's jittered pattern converges: 64 samples are far better than 1.
@@ -78,7 +78,7 @@ TEST_CASE("the stage 01 chart test reports FLIP at 1 to 64 samples per pixel for
 }
 
 TEST_CASE("the stage 03 chart test reports tests per ray at N = 16 to 4096 for each structure, the same every run", "[charts]") {
-    const std::string name = "chart: composites: tests per ray against the number of random spheres; per structure";
+    const std::string name = "chart: composites: tests per ray against the number of random spheres - per structure";
     const std::vector<chart_point> points = points_of(VL_TRUSTED_03, name);
     REQUIRE(points.size() == 5 * 9);
     std::set<std::string> series;

@@ -80,7 +80,7 @@ TEST_CASE("inverse: a matrix with zeros all along its diagonal inverts", "[01][i
     CHECK(distance(x * m, IDENTITY) < 1e-15);
 }
 
-TEST_CASE("inverse: a tiny leading pivot (1e-20) is swapped away; not divided by", "[01][inverse]") {
+TEST_CASE("inverse: a tiny leading pivot (1e-20) is swapped away - not divided by", "[01][inverse]") {
     // [[e, 1], [1, 1]] with e = 1e-20. Its inverse is [[1, -1], [-1, e]] / (e - 1), which
     // is [[-1, 1], [1, -e]] to full precision. Without pivoting, 1 - 1e20 rounds to
     // -1e20 and the top-left element comes out 0 instead of -1.
@@ -129,7 +129,7 @@ TEST_CASE("inverse: a general matrix with a projective bottom row inverts", "[01
     CHECK(distance(inverse(x), m) < 1e-14);
 }
 
-TEST_CASE("inverse: undoes a chain of scale; rotations; shear and translation", "[01][inverse]") {
+TEST_CASE("inverse: undoes a chain of scale - rotations - shear and translation", "[01][inverse]") {
     const matrix m = translation(4, -2, 7) * turn_z(0.9) * shearing(0.3, -0.7) * scaling(2, 0.5, 3) * turn_x(-1.2);
     const matrix x = inverse(m);
     CHECK(distance(x * m, IDENTITY) < 1e-14);

@@ -63,7 +63,7 @@ TEST_CASE("camera: image position 0 0 is the lower-left corner of the image as i
     CHECK(c->primary_ray(20, 20).direction().y > c->primary_ray(20, 10).direction().y);
 }
 
-TEST_CASE("camera: the field of view spans the image's height; not its width", "[01][camera]") {
+TEST_CASE("camera: the field of view spans the image's height - not its width", "[01][camera]") {
     const double fov = 40;
     const auto c = make_pinhole_camera(straight(fov), 320, 240);
     const double vertical = degrees_between(c->primary_ray(160, 0).direction(), c->primary_ray(160, 240).direction());
@@ -127,7 +127,7 @@ TEST_CASE("camera: an up of +x turns the image on its side", "[01][camera]") {
     CHECK(std::abs(right.x) < tol);
 }
 
-TEST_CASE("camera: looking along any direction; right is level and the frame is right-handed", "[01][camera]") {
+TEST_CASE("camera: looking along any direction - right is level and the frame is right-handed", "[01][camera]") {
     const point eye(3, 4, 5), at(-1, 2, 0);
     const vector up(0, 1, 0), forward = (at - eye).unit();
     const auto c = make_pinhole_camera(settings(eye, at, up, 70), 160, 90);

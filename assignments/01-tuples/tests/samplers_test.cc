@@ -58,7 +58,7 @@ TEST_CASE("samplers: center puts every sample in the middle of the pixel", "[01]
         }
 }
 
-TEST_CASE("samplers: grid with 4 samples is the thesis's 2 x 2 pattern; from the lower left", "[01][samplers]") {
+TEST_CASE("samplers: grid with 4 samples is the thesis's 2 x 2 pattern - from the lower left", "[01][samplers]") {
     const auto o = offsets_of("grid", 4);
     const std::pair<double, double> expected[] = {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
     for (std::size_t i = 0; i < 4; ++i) {
@@ -102,7 +102,7 @@ TEST_CASE("samplers: jittered samples repeat for the same seed and change with t
     CHECK_FALSE(same(offsets_of("jittered", 9, 42), offsets_of("grid", 9)));
 }
 
-TEST_CASE("samplers: random offsets repeat for a seed; change with it and cover the pixel evenly", "[01][samplers]") {
+TEST_CASE("samplers: random offsets repeat for a seed - change with it and cover the pixel evenly", "[01][samplers]") {
     CHECK(same(offsets_of("random", 16, 7), offsets_of("random", 16, 7)));
     CHECK_FALSE(same(offsets_of("random", 16, 7), offsets_of("random", 16, 8)));
     const auto o = offsets_of("random", 4096, 2024);
@@ -159,7 +159,7 @@ TEST_CASE("samplers: one sampler used from four threads at once gives each threa
     CHECK(same(results[0], offsets_of("jittered", 16, 77)));
 }
 
-TEST_CASE("samplers: every pattern fills every offset; each at least 0 and below 1; for any count", "[01][samplers]") {
+TEST_CASE("samplers: every pattern fills every offset - each at least 0 and below 1 - for any count", "[01][samplers]") {
     for (std::string_view name : {"center", "grid", "jittered", "random"})
         for (std::size_t n = 1; n <= 30; ++n)
             for (std::uint64_t seed : {0ull, 1ull, 0xffffffffffffffffull}) {
@@ -175,7 +175,7 @@ TEST_CASE("samplers: every pattern fills every offset; each at least 0 and below
     CHECK(places.size() == 10);
 }
 
-TEST_CASE("samplers: zero samples fill nothing; and unknown names give nullptr", "[01][samplers]") {
+TEST_CASE("samplers: zero samples fill nothing - and unknown names give nullptr", "[01][samplers]") {
     const auto pattern = make_sampler("jittered");
     REQUIRE(pattern);
     pattern->offsets(std::span<sample_offset>(), 3);  // must not crash

@@ -39,7 +39,7 @@ TEST_CASE("scenes: sky_rolled.ray_trace (a rolled wide-angle camera) matches its
     check_scene("sky_rolled");
 }
 
-TEST_CASE("scenes: spheres_on_side.ray_trace (up is +x; needs stage 02's SPHERE) matches its reference image",
+TEST_CASE("scenes: spheres_on_side.ray_trace (up is +x and it needs stage 02's SPHERE) matches its reference image",
           "[01][scenes]") {
     check_scene("spheres_on_side");
 }

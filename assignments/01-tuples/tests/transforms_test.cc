@@ -24,7 +24,7 @@ TEST_CASE("transforms: translate_matrix moves points and leaves vectors alone", 
     CHECK(translate_matrix({0, 0, 0}) == IDENTITY);
 }
 
-TEST_CASE("transforms: scale_matrix scales each axis of points and vectors; and mirrors for a negative factor",
+TEST_CASE("transforms: scale_matrix scales each axis of points and vectors - and mirrors for a negative factor",
           "[01][transforms]") {
     const matrix s = scale_matrix(2, 3, -1);
     CHECK(distance(s * point(1, 1, 1), point(2, 3, -1)) == 0);
@@ -33,7 +33,7 @@ TEST_CASE("transforms: scale_matrix scales each axis of points and vectors; and 
     CHECK(s.determinant() == Approx(-6));
 }
 
-TEST_CASE("transforms: quarter turns are right-handed (x to y about z; y to z about x; z to x about y)",
+TEST_CASE("transforms: quarter turns are right-handed (x to y about z and y to z about x and z to x about y)",
           "[01][transforms]") {
     CHECK(distance(rotate_z_matrix(pi / 2) * vector(1, 0, 0), vector(0, 1, 0)) < tol);
     CHECK(distance(rotate_x_matrix(pi / 2) * vector(0, 1, 0), vector(0, 0, 1)) < tol);
@@ -55,7 +55,7 @@ TEST_CASE("transforms: rotations keep lengths and angles (orthonormal with deter
     }
 }
 
-TEST_CASE("transforms: rotate_matrix about a coordinate axis is rotate_x/y/z_matrix; whatever the axis length",
+TEST_CASE("transforms: rotate_matrix about a coordinate axis is rotate_x/y/z_matrix - whatever the axis length",
           "[01][transforms]") {
     const double a = 0.83;
     CHECK(distance(rotate_matrix({1, 0, 0}, a), rotate_x_matrix(a)) < tol);

@@ -30,7 +30,7 @@ TEST_CASE("bounding sphere: gives the same nearest hit and leaf as a LIST of the
     CHECK(diff.empty());
 }
 
-TEST_CASE("bounding sphere: returns the nearest hit; not the first child's", "[03][boundsph]") {
+TEST_CASE("bounding sphere: returns the nearest hit - not the first child's", "[03][boundsph]") {
     // Four spheres in a row along -z, inserted far ones first: the ray from the origin
     // along -z hits all four; the nearest (z = -2, radius 0.5) is entered at t = 1.5.
     auto bs = make_bounding_sphere();
@@ -93,7 +93,7 @@ TEST_CASE("bounding sphere: a ray that enters the sphere and hits no child gets 
     CHECK(j.object == outer.get());
 }
 
-TEST_CASE("bounding sphere: its sphere is around the children's boxes; not their centres", "[03][boundsph]") {
+TEST_CASE("bounding sphere: its sphere is around the children's boxes - not their centres", "[03][boundsph]") {
     // A big sphere (radius 3 at the origin) and a small one (radius 0.1 at x = 4). A
     // sphere around the two centres (centre x = 2, radius 2) would cut off the big
     // sphere's left half; the ray down -z at x = -2.5 must still hit it.
@@ -164,7 +164,7 @@ TEST_CASE("bounding sphere: contains is true inside a child and false elsewhere"
     CHECK(bs->intersect(ray(point(3, 0, 5), vector(0, 0, -1))).t == Approx(4.5).epsilon(1e-12));
 }
 
-TEST_CASE("bounding sphere: refuses a PLANE; an empty LIST and a null pointer", "[03][boundsph]") {
+TEST_CASE("bounding sphere: refuses a PLANE - an empty LIST and a null pointer", "[03][boundsph]") {
     auto bs = make_bounding_sphere();
     add_sphere(*bs, point(0, 0, -5), 1, 1);
 

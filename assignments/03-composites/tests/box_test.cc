@@ -202,7 +202,7 @@ TEST_CASE("box: min_point and max_point are its corners", "[03][box][detail]") {
     CHECK(halved->intersect(ray(point(1.5, 2.5, 10), vector(0, 0, -1))).t == Approx(6).epsilon(1e-12));
 }
 
-TEST_CASE("box: refuses insert; delete_all_children and corners that are not below each other", "[03][box][detail]") {
+TEST_CASE("box: refuses insert - delete_all_children and corners that are not below each other", "[03][box][detail]") {
     const auto box = make_box(point(0, 0, -3), point(1, 1, -2));
     const std::string insert = usage_error_of([&] { box->insert(std::make_unique<test_sphere>(point(0, 0, 0), 1)); });
     INFO("insert into a BOX: " << insert);

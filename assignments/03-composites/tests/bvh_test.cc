@@ -141,7 +141,7 @@ TEST_CASE("bvh: walks near-first and stops at the first hit along a row of spher
     }
 }
 
-TEST_CASE("bvh: min_point; max_point and contains cover every child", "[03][bvh]") {
+TEST_CASE("bvh: min_point - max_point and contains cover every child", "[03][bvh]") {
     auto bvh = make_bvh(2);
     add_sphere(*bvh, point(1, 2, 3), 0.5);
     add_sphere(*bvh, point(-2, 4, 0), 1);
@@ -155,7 +155,7 @@ TEST_CASE("bvh: min_point; max_point and contains cover every child", "[03][bvh]
     CHECK(bvh->intersect(ray(point(0, 0, 0), vector(0, 0, 1))).t == Approx(9.75).epsilon(1e-12));
 }
 
-TEST_CASE("bvh: refuses a PLANE; an empty LIST; a null pointer and a bad leaf_size", "[03][bvh][detail]") {
+TEST_CASE("bvh: refuses a PLANE - an empty LIST - a null pointer and a bad leaf_size", "[03][bvh][detail]") {
     auto bvh = make_bvh();
     add_sphere(*bvh, point(0, 0, -5), 1, 1);
     const std::string plane =

@@ -163,7 +163,7 @@ TEST_CASE("fractal spheres: a ray that misses the fractal costs one bounding-vol
     }
 }
 
-TEST_CASE("fractal spheres: the bound reaches the tip of the longest chain; and a ray inside it that hits nothing is composite_only",
+TEST_CASE("fractal spheres: the bound reaches the tip of the longest chain - and a ray inside it that hits nothing is composite_only",
     "[03][fracsph]") {
     const point c(0, 0, 0);
     const double r = 1, q = 0.4;

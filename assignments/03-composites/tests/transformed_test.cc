@@ -57,7 +57,7 @@ vector ellipsoid_normal(const point& p, const vector& s, const vector& m) {
 
 }  // namespace
 
-TEST_CASE("transformed: a scaled sphere is hit at the world distance; not the object-space one",
+TEST_CASE("transformed: a scaled sphere is hit at the world distance - not the object-space one",
           "[03][transformed][essential]") {
     // Scale 2: the unit sphere becomes radius 2, so the ray from z = 10 hits at t = 8.
     // In object space the same ray starts at z = 5 and hits at 4: dividing the child's t
@@ -240,7 +240,7 @@ TEST_CASE("transformed: an empty transform misses every ray and takes exactly on
     CHECK(t->intersect(r).t == Approx(8).epsilon(1e-12));
 }
 
-TEST_CASE("transformed: refuses a matrix that is singular; not affine or not finite", "[03][transformed][detail]") {
+TEST_CASE("transformed: refuses a matrix that is singular - not affine or not finite", "[03][transformed][detail]") {
     // A good one first (the refusals are done for you; the intersection is not).
     CHECK(make_transformed(unit_sphere(), scale_then_move(1, 1, 1, 0, 0, -4))->intersect(ray()).t ==
           Approx(3).epsilon(1e-12));
@@ -273,7 +273,7 @@ TEST_CASE("scene: TRANSFORM applies its steps in the order written and writes a 
     CHECK(moved->intersect(ray(point(0, 3, 5), vector(0, 0, -1))).t == Approx(4).epsilon(1e-12));
 }
 
-TEST_CASE("scene: a TRANSFORM is refused at the step at fault; and a good one is hit",
+TEST_CASE("scene: a TRANSFORM is refused at the step at fault - and a good one is hit",
           "[03][transformed][scene][detail]") {
     const std::string singular = read_error("TRANSFORM { scale 1 0 1  SPHERE { } }");
     INFO(singular);

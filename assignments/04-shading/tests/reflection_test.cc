@@ -162,7 +162,7 @@ TEST_CASE("reflection: two facing mirrors stop at the depth limit", "[04][reflec
     }
 }
 
-TEST_CASE("reflection: head on; glass with ksr 0.3 and kst 0.5 reflects ksr + kst F = 0.32", "[04][reflection]") {
+TEST_CASE("reflection: head on - glass with ksr 0.3 and kst 0.5 reflects ksr + kst F = 0.32", "[04][reflection]") {
     // Glass below y = 0 (ksr 0.3, kst 0.5, ior 1.5, white), hit straight down. Head on F =
     // R0 = ((1 - 1.5) / (1 + 1.5))^2 = 0.04 (Schlick and the exact equations agree), and
     // the mirror ray gets w_r = ksr + kst F = 0.3 + 0.5 * 0.04 = 0.32. It goes straight up

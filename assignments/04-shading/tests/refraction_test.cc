@@ -91,7 +91,7 @@ TEST_CASE("refraction: near normal incidence Schlick reflects R0 = 0.04 for ior 
                 got.added, (1 - f.middle) * got.emitter, f.spread + 1e-6);
 }
 
-TEST_CASE("refraction: near head on; glass with ksr 0.3 and kst 0.5 transmits kst (1 - F) = 0.48", "[04][refraction]") {
+TEST_CASE("refraction: near head on - glass with ksr 0.3 and kst 0.5 transmits kst (1 - F) = 0.48", "[04][refraction]") {
     // Glass with ksr 0.3 and kst 0.5, 10 degrees from the normal (F = 0.04):
     //   w_t = kst (1 - F) = 0.5 * 0.96 = 0.48 of the emitter. (ksr adds to the mirror ray
     //   only, which goes up into the black sky.)

@@ -106,7 +106,7 @@ TEST_CASE("camera: every ray starts exactly at the eye with a unit direction", "
     t.finish("rays");
 }
 
-TEST_CASE("camera: the vertical field of view spans the height of square; wide and tall images",
+TEST_CASE("camera: the vertical field of view spans the height of square - wide and tall images",
           "[01][camera][essential]") {
     tally t;
     for (const shot& c : random_shots(304, 300)) {
@@ -125,7 +125,7 @@ TEST_CASE("camera: the vertical field of view spans the height of square; wide a
     t.finish("cameras");
 }
 
-TEST_CASE("camera: image position 0 0 is the lower-left corner; x grows right and y grows up",
+TEST_CASE("camera: image position 0 0 is the lower-left corner - x grows right and y grows up",
           "[01][camera][essential]") {
     tally t;
     for (const shot& c : random_shots(305, 200)) {
@@ -174,7 +174,7 @@ TEST_CASE("camera: primary rays match an independent pinhole model at pixel cent
     t.finish("rays");
 }
 
-TEST_CASE("camera: the image's right is (view direction) % up; for any up", "[01][camera][essential]") {
+TEST_CASE("camera: the image's right is (view direction) % up - for any up", "[01][camera][essential]") {
     // Ups along every axis and between them, perpendicular to the view or not, upside down.
     const point eye(1, 2, 3), look(1, 2, -2);
     const vector ups[] = {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {-1, 0, 0}, {1, 1, 0}, {0.3, 1, 4},
@@ -229,7 +229,7 @@ TEST_CASE("camera: pixels are square and evenly spaced on a plane facing the eye
     t.finish("cameras");
 }
 
-TEST_CASE("camera: odd and even image sizes; down to 1 x 1; are centred on the image's middle", "[01][camera]") {
+TEST_CASE("camera: odd and even image sizes - down to 1 x 1 - are centred on the image's middle", "[01][camera]") {
     const int sizes[][2] = {{1, 1}, {2, 2}, {1, 7}, {7, 1}, {97, 61}, {96, 64}, {3, 400}, {401, 2}, {64, 65}};
     tally t;
     for (const auto& wh : sizes) {
@@ -254,7 +254,7 @@ TEST_CASE("camera: odd and even image sizes; down to 1 x 1; are centred on the i
     t.finish("rays");
 }
 
-TEST_CASE("camera: positions far outside the image; on every side; continue the image plane", "[01][camera]") {
+TEST_CASE("camera: positions far outside the image - on every side - continue the image plane", "[01][camera]") {
     inputs in(312);
     tally t;
     for (const shot& c : random_shots(313, 100)) {
@@ -275,7 +275,7 @@ TEST_CASE("camera: positions far outside the image; on every side; continue the 
     t.finish("rays");
 }
 
-TEST_CASE("camera: only the part of up perpendicular to the view counts; and not its length", "[01][camera]") {
+TEST_CASE("camera: only the part of up perpendicular to the view counts - and not its length", "[01][camera]") {
     inputs in(314);
     tally t;
     for (const shot& c : random_shots(315, 100)) {
@@ -317,7 +317,7 @@ TEST_CASE("camera: fields of view near 0 and near 180 degrees still span the hei
     t.finish("cameras");
 }
 
-TEST_CASE("camera: far from the origin and far from look_at; the rays still aim right", "[01][camera]") {
+TEST_CASE("camera: far from the origin and far from look_at - the rays still aim right", "[01][camera]") {
     tally t;
     for (const double far : {1e3, 1e6, 1e9, 1e12}) {
         const camera_settings s = settings({far, -0.5 * far, 0.25 * far}, {1, 2, 3}, {0, 0, 1}, 40);
@@ -393,7 +393,7 @@ TEST_CASE("camera: eye == look_at is refused with usage_error", "[01][camera][de
     }
 }
 
-TEST_CASE("camera: a zero up; or an up along or against the view; is refused with usage_error",
+TEST_CASE("camera: a zero up - or an up along or against the view - is refused with usage_error",
           "[01][camera][detail]") {
     expect_valid_camera_works();
     const camera_settings bad[] = {
@@ -411,7 +411,7 @@ TEST_CASE("camera: a zero up; or an up along or against the view; is refused wit
     }
 }
 
-TEST_CASE("camera: a field of view of 0 or less; or of 180 or more; is refused with usage_error",
+TEST_CASE("camera: a field of view of 0 or less - or of 180 or more - is refused with usage_error",
           "[01][camera][detail]") {
     expect_valid_camera_works();
     for (const double fov : {0.0, -0.0, -10.0, 180.0, 180.5, 360.0, 1e300, std::numeric_limits<double>::infinity()}) {

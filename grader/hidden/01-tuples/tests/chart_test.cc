@@ -66,7 +66,7 @@ image picture_image(F&& colour) {
 
 }  // namespace
 
-TEST_CASE("chart: samplers: LDR-FLIP against the converged picture as samples per pixel grow; per pattern", "[01][chart]") {
+TEST_CASE("chart: samplers: LDR-FLIP against the converged picture as samples per pixel grow - per pattern", "[01][chart]") {
     const int fine = 16;
     const image converged = picture_image([&](int i, int j) {
         rgb sum{0, 0, 0};

@@ -95,7 +95,7 @@ bool derangement(const std::array<int, 4>& p) {
 
 }  // namespace
 
-TEST_CASE("inverse: random general 4x4 matrices; projective ones too; invert within the contract's error bound", "[01][inverse][essential]") {
+TEST_CASE("inverse: random general 4x4 matrices - projective ones too - invert within the contract's error bound", "[01][inverse][essential]") {
     inputs in(201);
     tally t;
     for (int k = 0; k < 300; ++k) {
@@ -157,7 +157,7 @@ TEST_CASE("inverse: tiny diagonal entries of well-conditioned matrices are pivot
     t.finish("matrices");
 }
 
-TEST_CASE("inverse: the pivot is the entry largest in absolute value; negative ones included",
+TEST_CASE("inverse: the pivot is the entry largest in absolute value - negative ones included",
           "[01][inverse][essential]") {
     // Each column holds one large negative entry and tiny positive ones: the largest signed
     // value is a tiny pivot, the largest absolute value the right one.
@@ -179,7 +179,7 @@ TEST_CASE("inverse: the pivot is the entry largest in absolute value; negative o
     t.finish("matrices");
 }
 
-TEST_CASE("inverse: zero pivots; on the diagonal or appearing during elimination; are swapped away",
+TEST_CASE("inverse: zero pivots - on the diagonal or appearing during elimination - are swapped away",
           "[01][inverse]") {
     inputs in(206);
     tally t;
@@ -318,7 +318,7 @@ TEST_CASE("inverse: diagonal matrices of any sizes and scaled rotations invert t
     t.finish("matrices");
 }
 
-TEST_CASE("inverse: affine transforms (rotation; scale; shear; translation) invert within the contract's error bound",
+TEST_CASE("inverse: affine transforms (rotation and scale and shear and translation) invert within the contract's error bound",
           "[01][inverse]") {
     inputs in(208);
     tally t;
@@ -337,7 +337,7 @@ TEST_CASE("inverse: affine transforms (rotation; scale; shear; translation) inve
     t.finish("matrices");
 }
 
-TEST_CASE("inverse: nearly singular matrices are inverted; not called singular", "[01][inverse][detail]") {
+TEST_CASE("inverse: nearly singular matrices are inverted - not called singular", "[01][inverse][detail]") {
     tally t;
     for (int e = 10; e <= 50; e += 5) {
         // [[1, 1], [1, 1 + d]] with d = 2^-e: κ about 4 / d, an exact inverse.

@@ -123,7 +123,7 @@ double chi_square(const std::vector<int>& counts) {
 
 }  // namespace
 
-TEST_CASE("samplers: every pattern fills all n offsets; each at least 0 and below 1; for n = 1 to 64", "[01][samplers][essential]") {
+TEST_CASE("samplers: every pattern fills all n offsets - each at least 0 and below 1 - for n = 1 to 64", "[01][samplers][essential]") {
     tally t;
     for (const char* name : patterns) {
         const auto pattern = require_sampler(name);
@@ -141,7 +141,7 @@ TEST_CASE("samplers: every pattern fills all n offsets; each at least 0 and belo
     t.finish("offsets");
 }
 
-TEST_CASE("samplers: center puts every sample at 0.5 0.5; the pixel's centre; for any n and seed", "[01][samplers][essential]") {
+TEST_CASE("samplers: center puts every sample at 0.5 0.5 - the pixel's centre - for any n and seed", "[01][samplers][essential]") {
     const auto pattern = require_sampler("center");
     tally t;
     for (std::size_t n = 1; n <= 64; n += 3)
@@ -155,7 +155,7 @@ TEST_CASE("samplers: center puts every sample at 0.5 0.5; the pixel's centre; fo
     t.finish("offsets");
 }
 
-TEST_CASE("samplers: grid sample i is the centre of cell i % k across and i / k up; k = ceil(sqrt(n)); for n = 1 to 64",
+TEST_CASE("samplers: grid sample i is the centre of cell i % k across and i / k up - k = ceil(sqrt(n)) - for n = 1 to 64",
           "[01][samplers][essential]") {
     const auto pattern = require_sampler("grid");
     tally t;
@@ -191,7 +191,7 @@ TEST_CASE("samplers: grid and center are the same for every seed", "[01][sampler
     t.finish("seeds");
 }
 
-TEST_CASE("samplers: jittered sample i lies in cell i % k across and i / k up; for n = 1 to 64 and many seeds",
+TEST_CASE("samplers: jittered sample i lies in cell i % k across and i / k up - for n = 1 to 64 and many seeds",
           "[01][samplers][essential]") {
     const auto pattern = require_sampler("jittered");
     tally t;
@@ -296,7 +296,7 @@ TEST_CASE("samplers: jittered positions within the cells are independent across 
     t.finish("cells");
 }
 
-TEST_CASE("samplers: jittered and random offsets repeat for a seed; from any sampler object",
+TEST_CASE("samplers: jittered and random offsets repeat for a seed - from any sampler object",
           "[01][samplers][essential]") {
     tally t;
     for (const char* name : {"jittered", "random"}) {
@@ -371,7 +371,7 @@ TEST_CASE("samplers: seeds that differ only in their upper 32 bits give differen
     t.finish("seed pairs");
 }
 
-TEST_CASE("samplers: offsets depend on the seed alone; not on earlier calls", "[01][samplers]") {
+TEST_CASE("samplers: offsets depend on the seed alone - not on earlier calls", "[01][samplers]") {
     tally t;
     for (const char* name : {"jittered", "random"}) {
         const auto fresh = require_sampler(name);
@@ -461,7 +461,7 @@ TEST_CASE("samplers: random offsets cover the pixel uniformly", "[01][samplers][
     t.finish("sample counts");
 }
 
-TEST_CASE("samplers: random samples are independent of each other; not a grid", "[01][samplers]") {
+TEST_CASE("samplers: random samples are independent of each other - not a grid", "[01][samplers]") {
     // Each random sample anywhere in the pixel: sample 0 is not held to a cell, successive
     // samples are uncorrelated, and x is not tied to y.
     const auto pattern = require_sampler("random");
@@ -512,7 +512,7 @@ TEST_CASE("samplers: n == 0 fills nothing", "[01][samplers][detail]") {
     t.finish("patterns");
 }
 
-TEST_CASE("samplers: unknown names; and known names in the wrong case; give nullptr", "[01][samplers][detail]") {
+TEST_CASE("samplers: unknown names - and known names in the wrong case - give nullptr", "[01][samplers][detail]") {
     for (const char* name : patterns)
         VL_EXPECT(make_sampler(name) != nullptr, "make_sampler(\"" << name << "\") should return a sampler; yours returned nullptr");
     for (const char* name : {"", "Center", "GRID", "Jittered", "RANDOM", "stratified", "jitter", "grid ", " random",

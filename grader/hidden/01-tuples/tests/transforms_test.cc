@@ -130,7 +130,7 @@ TEST_CASE("transforms: translate_matrix(v) * p is p + v for any point and offset
     t.finish("points");
 }
 
-TEST_CASE("transforms: translate_matrix leaves vectors alone; whatever the offset", "[01][transforms][essential]") {
+TEST_CASE("transforms: translate_matrix leaves vectors alone - whatever the offset", "[01][transforms][essential]") {
     inputs in(102);
     tally t;
     for (int k = 0; k < 300; ++k) {
@@ -167,7 +167,7 @@ TEST_CASE("transforms: translate_matrix ignores the offset's w and keeps the bot
 
 // --- scale_matrix ----------------------------------------------------------------------------
 
-TEST_CASE("transforms: scale_matrix scales each axis by its own factor; for points and vectors",
+TEST_CASE("transforms: scale_matrix scales each axis by its own factor - for points and vectors",
           "[01][transforms][essential]") {
     inputs in(103);
     tally t;
@@ -235,7 +235,7 @@ TEST_CASE("transforms: a uniform scale_matrix of s on every axis scales vectors 
     t.finish("scales");
 }
 
-TEST_CASE("transforms: every builder returns an affine matrix; bottom row exactly 0 0 0 1", "[01][transforms]") {
+TEST_CASE("transforms: every builder returns an affine matrix - bottom row exactly 0 0 0 1", "[01][transforms]") {
     inputs in(119);
     tally t;
     for (int k = 0; k < 40; ++k) {
@@ -325,7 +325,7 @@ TEST_CASE("transforms: rotate_x/y/z_matrix at any angle are the cos/sin rotation
     t.finish("rotations");
 }
 
-TEST_CASE("transforms: rotations keep lengths and angles: orthonormal; determinant +1; affine",
+TEST_CASE("transforms: rotations keep lengths and angles: orthonormal - determinant +1 - affine",
           "[01][transforms]") {
     inputs in(105);
     tally t;
@@ -530,7 +530,7 @@ TEST_CASE("transforms: rotate_matrix refuses the zero axis with usage_error", "[
 
 // --- shear_matrix ----------------------------------------------------------------------------------
 
-TEST_CASE("transforms: shear_matrix gives x + shx z and y + shy z and keeps z; for points and vectors", "[01][transforms]") {
+TEST_CASE("transforms: shear_matrix gives x + shx z and y + shy z and keeps z - for points and vectors", "[01][transforms]") {
     inputs in(111);
     tally t;
     for (int k = 0; k < 300; ++k) {
@@ -649,7 +649,7 @@ TEST_CASE("transforms: look_at_matrix takes the eye to the origin and look_at to
     t.finish("checks");
 }
 
-TEST_CASE("transforms: look_at_matrix's rotation is right-handed: orthonormal rows; determinant +1",
+TEST_CASE("transforms: look_at_matrix's rotation is right-handed: orthonormal rows - determinant +1",
           "[01][transforms][essential]") {
     tally t;
     for (const view_case& c : random_views(114, 200)) {
@@ -676,7 +676,7 @@ TEST_CASE("transforms: look_at_matrix sends up into the y-z plane with a positiv
     t.finish("views");
 }
 
-TEST_CASE("transforms: look_at_matrix is the eye's frame: rows right; up; backwards; then the move",
+TEST_CASE("transforms: look_at_matrix is the eye's frame: rows right - up - backwards - then the move",
           "[01][transforms]") {
     tally t;
     for (const view_case& c : random_views(116, 200)) {
@@ -698,7 +698,7 @@ TEST_CASE("transforms: look_at_matrix is the eye's frame: rows right; up; backwa
     t.finish("views");
 }
 
-TEST_CASE("transforms: look_at_matrix uses only the part of up perpendicular to the view; whatever its length",
+TEST_CASE("transforms: look_at_matrix uses only the part of up perpendicular to the view - whatever its length",
           "[01][transforms]") {
     tally t;
     inputs in(117);
@@ -720,7 +720,7 @@ TEST_CASE("transforms: look_at_matrix uses only the part of up perpendicular to 
     t.finish("views");
 }
 
-TEST_CASE("transforms: look_at_matrix refuses eye == look_at; a zero up and an up along the view",
+TEST_CASE("transforms: look_at_matrix refuses eye == look_at - a zero up and an up along the view",
           "[01][transforms][detail]") {
     // A valid view gives a matrix (whether it is the right one is for the other tests).
     const matrix ok = look_at_matrix(point(0, 0, 5), point(0, 0, 0), vector(0, 1, 0));

@@ -113,7 +113,7 @@ TEST_CASE("plane: rays from either side meet a tilted plane where the plane equa
     t.report();
 }
 
-TEST_CASE("plane: a plane behind the ray; or one the ray moves away from; is not hit", "[02][plane][misses][essential]") {
+TEST_CASE("plane: a plane behind the ray - or one the ray moves away from - is not hit", "[02][plane][misses][essential]") {
     tally t("rays moving away from a plane");
     sampler random(312);
     for (int k = 0; k < 1000; ++k) {
@@ -131,7 +131,7 @@ TEST_CASE("plane: a plane behind the ray; or one the ray moves away from; is not
     t.report();
 }
 
-TEST_CASE("plane: rays exactly parallel to the plane; beside it or lying in it; miss with no NaN and no infinity", "[02][plane][parallel][essential]") {
+TEST_CASE("plane: rays exactly parallel to the plane - beside it or lying in it - miss with no NaN and no infinity", "[02][plane][parallel][essential]") {
     // Normals and directions chosen so that d . n is exactly 0 in floating point.
     const struct {
         point on;
@@ -163,7 +163,7 @@ TEST_CASE("plane: rays exactly parallel to the plane; beside it or lying in it; 
     t.report();
 }
 
-TEST_CASE("plane: rays that start on the plane do not hit it again; whatever the sign of zero_t", "[02][plane][surface]") {
+TEST_CASE("plane: rays that start on the plane do not hit it again - whatever the sign of zero_t", "[02][plane][surface]") {
     tally t("rays leaving a plane");
     sampler random(313);
     for (const double zero_t : {1e-6, -1e-6}) {
@@ -185,7 +185,7 @@ TEST_CASE("plane: rays that start on the plane do not hit it again; whatever the
     t.report();
 }
 
-TEST_CASE("plane: zero_t; positive or negative; hides a hit up to its absolute value", "[02][plane][zero_t]") {
+TEST_CASE("plane: zero_t - positive or negative - hides a hit up to its absolute value", "[02][plane][zero_t]") {
     tally t("a plane hit at t = 0.3 with different zero_t");
     const flat p{point(0, -0.3, 0), vector(0, 1, 0)};
     const auto pl = make_plane(p.on, p.normal);
@@ -224,7 +224,7 @@ TEST_CASE("plane: a plane a million units away is met with full relative precisi
 
 // --- normal, contains, bounds -------------------------------------------------------------
 
-TEST_CASE("plane: its normal is the given one made unit; everywhere and also after rays from behind", "[02][plane][normals][essential]") {
+TEST_CASE("plane: its normal is the given one made unit - everywhere and also after rays from behind", "[02][plane][normals][essential]") {
     tally t("normals");
     sampler random(315);
     std::vector<flat> all = planes;
@@ -275,7 +275,7 @@ TEST_CASE("plane: make_plane refuses a zero normal and any coordinate that is no
     t.report();
 }
 
-TEST_CASE("plane: a PLANE in a scene file is the plane its point; normal and surface keys describe", "[02][plane][scene_io]") {
+TEST_CASE("plane: a PLANE in a scene file is the plane its point - normal and surface keys describe", "[02][plane][scene_io]") {
     tally t("PLANE read from a scene file");
     const flat p{point(0.1 + 1e-13, -1.0 / 3, 7.25), vector(1.0 / 3, -2, 0.5 + 1e-12)};
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
@@ -287,7 +287,7 @@ TEST_CASE("plane: a PLANE in a scene file is the plane its point; normal and sur
     t.report();
 }
 
-TEST_CASE("plane: a bad PLANE in a scene file is refused at the value at fault; a good one is read", "[02][plane][scene_io][detail]") {
+TEST_CASE("plane: a bad PLANE in a scene file is refused at the value at fault - a good one is read", "[02][plane][scene_io][detail]") {
     tally t("PLANE blocks in scene files");
     check_refused(t, {{"PLANE { normal 0 0 0 }", "hidden.ray_trace:1:16"},
                       {"PLANE {\n  point 1 2 3\n  normal (0, 0, 0)\n}", "hidden.ray_trace:3:10"},

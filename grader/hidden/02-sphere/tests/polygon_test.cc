@@ -168,7 +168,7 @@ void sweep(tally& t, const shape& v, sampler& random, int rays) {
 
 // --- hits and misses ---------------------------------------------------------------------
 
-TEST_CASE("polygon: rays at random convex polygons hit inside them and miss outside; from either side", "[02][polygon][hits][essential]") {
+TEST_CASE("polygon: rays at random convex polygons hit inside them and miss outside - from either side", "[02][polygon][hits][essential]") {
     tally t("rays at convex polygons");
     sampler random(511);
     for (int k = 0; k < 40; ++k) sweep(t, random_convex(random), random, 60);
@@ -244,7 +244,7 @@ TEST_CASE("polygon: rays exactly parallel to a polygon or lying in its plane mis
     t.report();
 }
 
-TEST_CASE("polygon: rays leaving a point of the polygon never hit it again; whatever the sign of zero_t", "[02][polygon][surface]") {
+TEST_CASE("polygon: rays leaving a point of the polygon never hit it again - whatever the sign of zero_t", "[02][polygon][surface]") {
     tally t("rays leaving a polygon");
     const vector n = vector(-0.7, 0.2, 0.5).unit();
     vector u, v;
@@ -267,7 +267,7 @@ TEST_CASE("polygon: rays leaving a point of the polygon never hit it again; what
     t.report();
 }
 
-TEST_CASE("polygon: zero_t; positive or negative; hides a hit up to its absolute value", "[02][polygon][zero_t]") {
+TEST_CASE("polygon: zero_t - positive or negative - hides a hit up to its absolute value", "[02][polygon][zero_t]") {
     tally t("a polygon hit at t = 0.3 with different zero_t");
     const shape v = {point(0, 0, -0.3), point(1, 0, -0.3), point(1, 1, -0.3), point(0, 1, -0.3)};
     const auto p = make_polygon(v);
@@ -356,7 +356,7 @@ TEST_CASE("polygon: rays through the shared edges and the hub of a ring of quadr
 
 // --- collinear vertices, normal, bounds ----------------------------------------------------
 
-TEST_CASE("polygon: three vertices in a row on one edge are allowed; and the polygon is hit; missed and faces as usual", "[02][polygon][collinear]") {
+TEST_CASE("polygon: three vertices in a row on one edge are allowed - and the polygon is hit - missed and faces as usual", "[02][polygon][collinear]") {
     // The contract refuses a vertex *outside* the line of an edge; one on it is fine. The
     // normal must then not come from the first three vertices alone.
     tally t("polygons with collinear consecutive vertices");
@@ -393,7 +393,7 @@ TEST_CASE("polygon: three vertices in a row on one edge are allowed; and the pol
     t.report();
 }
 
-TEST_CASE("polygon: the normal follows the winding of a twelve-sided polygon; from any first vertex", "[02][polygon][normals][essential]") {
+TEST_CASE("polygon: the normal follows the winding of a twelve-sided polygon - from any first vertex", "[02][polygon][normals][essential]") {
     tally t("normals");
     const vector n = vector(-2, 0.5, 1.5).unit();
     vector u, v;
@@ -443,7 +443,7 @@ TEST_CASE("polygon: its box is exactly the smallest one around the vertices", "[
 
 // --- the factory and scene files ----------------------------------------------------------
 
-TEST_CASE("polygon: make_polygon refuses too few; repeated; non-finite; collinear; bent or dented vertices and takes rounded ones", "[02][polygon][refusals]") {
+TEST_CASE("polygon: make_polygon refuses too few - repeated - non-finite - collinear - bent or dented vertices and takes rounded ones", "[02][polygon][refusals]") {
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
     tally t("make_polygon");
     const point a(0, 0, 0), b(1, 0, 0), c(1, 1, 0), d(0, 1, 0);
@@ -497,7 +497,7 @@ TEST_CASE("polygon: a POLYGON in a scene file is the polygon its vertices and su
     t.report();
 }
 
-TEST_CASE("polygon: a bad POLYGON in a scene file is refused at the vertex at fault; a good one is read", "[02][polygon][scene_io][detail]") {
+TEST_CASE("polygon: a bad POLYGON in a scene file is refused at the vertex at fault - a good one is read", "[02][polygon][scene_io][detail]") {
     tally t("POLYGON blocks in scene files");
     check_refused(t, {
         {"POLYGON {\n  vertices (0, 0, 0) (2, 0, 0) (2, 2, 0) (0, 2, 0)\n  (-0.5, 1, 0.3)\n}", "hidden.ray_trace:3:3"},
@@ -522,7 +522,7 @@ TEST_CASE("polygon: an empty POLYGON block is the unit square facing plus z with
     t.report();
 }
 
-TEST_CASE("polygon: write() keeps every digit of the vertices; in order; and of each surface key", "[02][polygon][scene_io]") {
+TEST_CASE("polygon: write() keeps every digit of the vertices - in order - and of each surface key", "[02][polygon][scene_io]") {
     tally t("write() of a POLYGON read back");
     const vector n = vector(1.0 / 3, -0.2, 1).unit();
     vector u, v;

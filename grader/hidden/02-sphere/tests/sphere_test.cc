@@ -129,7 +129,7 @@ TEST_CASE("sphere: rays from outside hit the near side at the distance the geome
     t.report();
 }
 
-TEST_CASE("sphere: rays that pass beside it; point away from it or start beyond it miss", "[02][sphere][misses][essential]") {
+TEST_CASE("sphere: rays that pass beside it - point away from it or start beyond it miss", "[02][sphere][misses][essential]") {
     tally t("rays that never meet the sphere");
     sampler random(202);
     for (const ball& b : spheres) {
@@ -156,7 +156,7 @@ TEST_CASE("sphere: rays that pass beside it; point away from it or start beyond 
 
 // --- rays from inside and from the surface ----------------------------------------------
 
-TEST_CASE("sphere: rays from inside; from the centre or anywhere else; hit the far side ahead", "[02][sphere][inside][essential]") {
+TEST_CASE("sphere: rays from inside - from the centre or anywhere else - hit the far side ahead", "[02][sphere][inside][essential]") {
     tally t("rays that start inside the sphere");
     sampler random(203);
     for (const ball& b : spheres) {
@@ -206,7 +206,7 @@ TEST_CASE("sphere: rays that start on the surface hit the far side going in and 
     t.report();
 }
 
-TEST_CASE("sphere: zero_t; positive or negative; hides every hit up to its absolute value", "[02][sphere][zero_t]") {
+TEST_CASE("sphere: zero_t - positive or negative - hides every hit up to its absolute value", "[02][sphere][zero_t]") {
     // Along -z from the origin the sphere around (0, 0, -1.3) of radius 1 is entered at
     // t = 0.3 and left at t = 2.3; from (0, 0, -1.3) itself the far side is at t = 1.
     tally t("hits with different zero_t");
@@ -258,7 +258,7 @@ TEST_CASE("sphere: the near side of a huge sphere seen from close by keeps its d
 
 // --- normals, contains, bounds -------------------------------------------------------------
 
-TEST_CASE("sphere: normals all over the surface are outward unit vectors; also where a ray from inside hits", "[02][sphere][normals][essential]") {
+TEST_CASE("sphere: normals all over the surface are outward unit vectors - also where a ray from inside hits", "[02][sphere][normals][essential]") {
     tally t("normals");
     sampler random(208);
     std::vector<ball> all = spheres;
@@ -346,7 +346,7 @@ TEST_CASE("sphere: the box is the centre minus and plus the radius in every axis
 
 // --- the factory and scene files ----------------------------------------------------------
 
-TEST_CASE("sphere: make_sphere refuses a radius that is zero; negative; NaN or infinite and a centre that is not finite", "[02][sphere][refusals]") {
+TEST_CASE("sphere: make_sphere refuses a radius that is zero - negative - NaN or infinite and a centre that is not finite", "[02][sphere][refusals]") {
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
     tally t("make_sphere with input that is not a sphere");
     for (const double radius : {0.0, -0.0, -1.0, -1e-300, nan, inf, -inf})
@@ -362,7 +362,7 @@ TEST_CASE("sphere: make_sphere refuses a radius that is zero; negative; NaN or i
     t.report();
 }
 
-TEST_CASE("sphere: a SPHERE in a scene file is the sphere its centre; radius and surface keys describe", "[02][sphere][scene_io]") {
+TEST_CASE("sphere: a SPHERE in a scene file is the sphere its centre - radius and surface keys describe", "[02][sphere][scene_io]") {
     tally t("SPHERE read from a scene file");
     const ball b{point(0.1 + 1e-13, -1.0 / 3, 7.25), 2.0 / 3};
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
@@ -374,7 +374,7 @@ TEST_CASE("sphere: a SPHERE in a scene file is the sphere its centre; radius and
     t.report();
 }
 
-TEST_CASE("sphere: a bad SPHERE in a scene file is refused at the value at fault; a good one is read", "[02][sphere][scene_io][detail]") {
+TEST_CASE("sphere: a bad SPHERE in a scene file is refused at the value at fault - a good one is read", "[02][sphere][scene_io][detail]") {
     tally t("SPHERE blocks in scene files");
     check_refused(t, {{"SPHERE { radius 0 }", "hidden.ray_trace:1:17"},
                       {"SPHERE {\n  center 0 0 0\n  radius -2.5\n}", "hidden.ray_trace:3:10"},
@@ -394,7 +394,7 @@ TEST_CASE("sphere: an empty SPHERE block is the unit sphere at the origin with t
     t.report();
 }
 
-TEST_CASE("sphere: write() keeps every digit of the centre; the radius and each surface key", "[02][sphere][scene_io]") {
+TEST_CASE("sphere: write() keeps every digit of the centre - the radius and each surface key", "[02][sphere][scene_io]") {
     tally t("write() of a SPHERE read back");
     for (const ball& b : {ball{point(0.1 + 1e-13, -1.0 / 3, 2.0 / 3 + 1e-12), 1.0 / 3 + 1e-14},
                           ball{point(123456.789012345, 1e-7, -1.0 / 7), 2.5e-7 / 3}}) {

@@ -120,7 +120,7 @@ std::string triangle_text(const corners& k, const vl::surface& s, bool with_surf
 
 // --- hits and misses ---------------------------------------------------------------------
 
-TEST_CASE("triangle: rays aimed at points inside a triangle hit it there; from the front and from behind", "[02][triangle][hits][essential]") {
+TEST_CASE("triangle: rays aimed at points inside a triangle hit it there - from the front and from behind", "[02][triangle][hits][essential]") {
     tally t("rays aimed inside triangles");
     sampler random(411);
     for (const corners& k : triangles) {
@@ -140,7 +140,7 @@ TEST_CASE("triangle: rays aimed at points inside a triangle hit it there; from t
     t.report();
 }
 
-TEST_CASE("triangle: rays aimed just outside each edge; beyond each corner or away from it miss", "[02][triangle][misses][essential]") {
+TEST_CASE("triangle: rays aimed just outside each edge - beyond each corner or away from it miss", "[02][triangle][misses][essential]") {
     tally t("rays that pass a triangle by");
     sampler random(412);
     for (const corners& k : triangles) {
@@ -201,7 +201,7 @@ TEST_CASE("triangle: rays exactly parallel to a triangle or lying in its plane m
     t.report();
 }
 
-TEST_CASE("triangle: rays leaving a point of the triangle never hit it again; whatever the sign of zero_t", "[02][triangle][surface]") {
+TEST_CASE("triangle: rays leaving a point of the triangle never hit it again - whatever the sign of zero_t", "[02][triangle][surface]") {
     tally t("rays leaving a triangle");
     sampler random(414);
     for (const double zero_t : {1e-6, -1e-6}) {
@@ -225,7 +225,7 @@ TEST_CASE("triangle: rays leaving a point of the triangle never hit it again; wh
     t.report();
 }
 
-TEST_CASE("triangle: zero_t; positive or negative; hides a hit up to its absolute value", "[02][triangle][zero_t]") {
+TEST_CASE("triangle: zero_t - positive or negative - hides a hit up to its absolute value", "[02][triangle][zero_t]") {
     tally t("a triangle hit at t = 0.3 with different zero_t");
     const corners k{point(0, 0, -0.3), point(1, 0, -0.3), point(0, 1, -0.3)};
     const auto tri = make_triangle(k.a, k.b, k.c);
@@ -378,7 +378,7 @@ TEST_CASE("triangle: a bumpy grid mesh lets no ray through its shared edges and 
 
 // --- normal, contains, bounds -------------------------------------------------------------
 
-TEST_CASE("triangle: the normal follows the counter-clockwise winding; whichever vertex comes first", "[02][triangle][normals][essential]") {
+TEST_CASE("triangle: the normal follows the counter-clockwise winding - whichever vertex comes first", "[02][triangle][normals][essential]") {
     tally t("normals");
     sampler random(416);
     std::vector<corners> all = triangles;
@@ -428,7 +428,7 @@ TEST_CASE("triangle: its box is exactly the smallest one around the three vertic
 
 // --- the factory and scene files ----------------------------------------------------------
 
-TEST_CASE("triangle: make_triangle refuses collinear; coincident or non-finite vertices", "[02][triangle][refusals]") {
+TEST_CASE("triangle: make_triangle refuses collinear - coincident or non-finite vertices", "[02][triangle][refusals]") {
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
     tally t("make_triangle with vertices that are not a triangle");
     const corners bad[] = {
@@ -461,7 +461,7 @@ TEST_CASE("triangle: a TRIANGLE in a scene file is the triangle its vertices and
     t.report();
 }
 
-TEST_CASE("triangle: a bad TRIANGLE in a scene file is refused with its place; a good one is read", "[02][triangle][scene_io][detail]") {
+TEST_CASE("triangle: a bad TRIANGLE in a scene file is refused with its place - a good one is read", "[02][triangle][scene_io][detail]") {
     tally t("TRIANGLE blocks in scene files");
     for (const char* text : {"TRIANGLE { a 0 0 0 b 1 1 1 c 2 2 2 }", "TRIANGLE { a 1 2 3 b 1 2 3 }",
                              "TRIANGLE { c (0.5, 0.5, 0, 0) }"}) {

@@ -245,7 +245,7 @@ void check_sphere_set(tally& t, const rtab_component& frac, const frac_model& mo
 // BOUNDSPH
 // ================================================================================================
 
-TEST_CASE("boundsph: the sphere is the smallest one around the union of the children's boxes; not around their centres", "[03][boundsph][sphere][essential]") {
+TEST_CASE("boundsph: the sphere is the smallest one around the union of the children's boxes - not around their centres", "[03][boundsph][sphere][essential]") {
     // Rays that miss every child but pass inside the contract's sphere get composite_only of
     // the bounding sphere after one sphere test and one test of each child; rays that pass
     // outside it get a miss after that one sphere test alone.
@@ -288,7 +288,7 @@ TEST_CASE("boundsph: the sphere is the smallest one around the union of the chil
     t.report();
 }
 
-TEST_CASE("boundsph: the nearest hit of the children wins and names the leaf; also in bounding spheres inside bounding spheres and LISTs", "[03][boundsph][hits][essential]") {
+TEST_CASE("boundsph: the nearest hit of the children wins and names the leaf - also in bounding spheres inside bounding spheres and LISTs", "[03][boundsph][hits][essential]") {
     tally t("rays at nested bounding spheres");
     dice random(110);
     for (int scene = 0; scene < 5; ++scene) {
@@ -327,7 +327,7 @@ TEST_CASE("boundsph: the nearest hit of the children wins and names the leaf; al
     t.report();
 }
 
-TEST_CASE("boundsph: a ray that misses costs one sphere test; one that enters tests each child once; and nested spheres are tested only when entered", "[03][boundsph][budget][essential]") {
+TEST_CASE("boundsph: a ray that misses costs one sphere test - one that enters tests each child once - and nested spheres are tested only when entered", "[03][boundsph][budget][essential]") {
     tally t("the cost of rays at nested bounding spheres");
     dice random(120);
     for (int scene = 0; scene < 4; ++scene) {
@@ -377,7 +377,7 @@ TEST_CASE("boundsph: a ray that misses costs one sphere test; one that enters te
     t.report();
 }
 
-TEST_CASE("boundsph: rule 2 names the bounding sphere itself; also when a child answered composite_only; and an empty one is missed at no cost", "[03][boundsph][rules]") {
+TEST_CASE("boundsph: rule 2 names the bounding sphere itself - also when a child answered composite_only - and an empty one is missed at no cost", "[03][boundsph][rules]") {
     tally t("the rules for no hit");
     namer names;
     auto bs = make_bounding_sphere();
@@ -414,7 +414,7 @@ TEST_CASE("boundsph: rule 2 names the bounding sphere itself; also when a child 
     t.report();
 }
 
-TEST_CASE("boundsph: min_point() and max_point() are the union of the children's boxes; and contains() asks the children", "[03][boundsph][bounds]") {
+TEST_CASE("boundsph: min_point() and max_point() are the union of the children's boxes - and contains() asks the children", "[03][boundsph][bounds]") {
     tally t("the bounding sphere's box");
     dice random(130);
     auto bs = make_bounding_sphere();
@@ -430,7 +430,7 @@ TEST_CASE("boundsph: min_point() and max_point() are the union of the children's
     t.report();
 }
 
-TEST_CASE("boundsph: insert() refuses a child whose box is unknown; a null pointer and the bounding sphere itself", "[03][boundsph][refusals]") {
+TEST_CASE("boundsph: insert() refuses a child whose box is unknown - a null pointer and the bounding sphere itself", "[03][boundsph][refusals]") {
     tally t("refusals");
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     auto bs = make_bounding_sphere();
@@ -463,7 +463,7 @@ TEST_CASE("boundsph: insert() refuses a child whose box is unknown; a null point
     t.report();
 }
 
-TEST_CASE("boundsph: the refusal of an unbounded child names both types and the way out; and a scene file reports it at the child's place", "[03][boundsph][scene_io][detail]") {
+TEST_CASE("boundsph: the refusal of an unbounded child names both types and the way out - and a scene file reports it at the child's place", "[03][boundsph][scene_io][detail]") {
     tally t("refused children");
     auto bs = make_bounding_sphere();
     std::string message;
@@ -481,7 +481,7 @@ TEST_CASE("boundsph: the refusal of an unbounded child names both types and the 
     t.report();
 }
 
-TEST_CASE("boundsph: BOUNDSPH { ... } is read from a scene file with its children; and write() gives them back", "[03][boundsph][scene_io]") {
+TEST_CASE("boundsph: BOUNDSPH { ... } is read from a scene file with its children - and write() gives them back", "[03][boundsph][scene_io]") {
     tally t("BOUNDSPH in scene files");
     dice random(140);
     std::string text = "BOUNDSPH {\n";
@@ -528,7 +528,7 @@ const frac_case frac_cases[] = {{point(0, 0, 0), 1, 3, 0.4},       {point(1.5, -
                                 {point(0, 0, 0), 1, 2, 0.9}};
 }  // namespace
 
-TEST_CASE("fracsph: the spheres are the contract's: six children on the top sphere; five on every other; none towards the parent", "[03][fracsph][shape][essential]") {
+TEST_CASE("fracsph: the spheres are the contract's: six children on the top sphere - five on every other - none towards the parent", "[03][fracsph][shape][essential]") {
     tally t("the spheres of fractal spheres");
     for (const frac_case& fc : frac_cases) {
         const auto frac = make_frac_sphere(fc.c, fc.r, fc.depth, fc.q);
@@ -539,7 +539,7 @@ TEST_CASE("fracsph: the spheres are the contract's: six children on the top sphe
     t.report();
 }
 
-TEST_CASE("fracsph: rays hit the nearest sphere of the fractal at the right distance; and that sphere is the object", "[03][fracsph][hits][essential]") {
+TEST_CASE("fracsph: rays hit the nearest sphere of the fractal at the right distance - and that sphere is the object", "[03][fracsph][hits][essential]") {
     tally t("rays at fractal spheres");
     dice random(150);
     for (const frac_case& fc : frac_cases) {
@@ -617,7 +617,7 @@ TEST_CASE("fracsph: the bounds are tight: each ray makes exactly the sphere test
     t.report();
 }
 
-TEST_CASE("fracsph: rays that enter a bound for nothing get composite_only of the fractal; rays beside it a miss", "[03][fracsph][rules]") {
+TEST_CASE("fracsph: rays that enter a bound for nothing get composite_only of the fractal - rays beside it a miss", "[03][fracsph][rules]") {
     tally t("rules at fractal spheres");
     dice random(170);
     for (const frac_case& fc : frac_cases) {
@@ -645,7 +645,7 @@ TEST_CASE("fracsph: rays that enter a bound for nothing get composite_only of th
     t.report();
 }
 
-TEST_CASE("fracsph: min_point() and max_point() are the union of the spheres' boxes; and contains() is true inside any sphere", "[03][fracsph][bounds]") {
+TEST_CASE("fracsph: min_point() and max_point() are the union of the spheres' boxes - and contains() is true inside any sphere", "[03][fracsph][bounds]") {
     tally t("the fractal's box and inside");
     dice random(180);
     for (const frac_case& fc : frac_cases) {
@@ -682,7 +682,7 @@ TEST_CASE("fracsph: min_point() and max_point() are the union of the spheres' bo
     t.report();
 }
 
-TEST_CASE("fracsph: FRACSPH { } is center 0 0 0; radius 1; depth 3; ratio 0.4; and its surface keys reach every sphere", "[03][fracsph][scene_io]") {
+TEST_CASE("fracsph: FRACSPH { } is center 0 0 0 - radius 1 - depth 3 - ratio 0.4 - and its surface keys reach every sphere", "[03][fracsph][scene_io]") {
     tally t("FRACSPH in scene files");
     const auto plain = read_one("FRACSPH { }");
     check_sphere_set(t, *plain, frac_model(point(0, 0, 0), 1, 3, 0.4), "FRACSPH { }");
@@ -715,7 +715,7 @@ TEST_CASE("fracsph: FRACSPH { } is center 0 0 0; radius 1; depth 3; ratio 0.4; a
     t.report();
 }
 
-TEST_CASE("fracsph: write() gives back the FRACSPH it was read from; which reads back as the same spheres", "[03][fracsph][scene_io]") {
+TEST_CASE("fracsph: write() gives back the FRACSPH it was read from - which reads back as the same spheres", "[03][fracsph][scene_io]") {
     tally t("FRACSPH written and read back");
     const std::string text = "FRACSPH { center 0.1 -0.2 0.3 radius 0.7 depth 2 ratio 0.45 kdr 0.25 }";
     const auto first = read_one(text);
@@ -733,7 +733,7 @@ TEST_CASE("fracsph: write() gives back the FRACSPH it was read from; which reads
     t.report();
 }
 
-TEST_CASE("fracsph: make_frac_sphere() and the scene file refuse a depth outside 0 to 7; a ratio not between 0 and 1 and a radius that is not > 0; and insert() is refused", "[03][fracsph][refusals][detail]") {
+TEST_CASE("fracsph: make_frac_sphere() and the scene file refuse a depth outside 0 to 7 - a ratio not between 0 and 1 and a radius that is not > 0 - and insert() is refused", "[03][fracsph][refusals][detail]") {
     tally t("refusals");
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const struct {

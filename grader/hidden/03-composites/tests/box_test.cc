@@ -162,7 +162,7 @@ double size_of(const box_shape& b) { return (b.hi - b.lo).length(); }
 
 }  // namespace
 
-TEST_CASE("box: rays from outside hit the face they enter at the right distance; that face being the object with an outward normal", "[03][box][hits][essential]") {
+TEST_CASE("box: rays from outside hit the face they enter at the right distance - that face being the object with an outward normal", "[03][box][hits][essential]") {
     tally t("rays at boxes from outside");
     dice random(200);
     for (const box_shape& b : boxes) {
@@ -180,7 +180,7 @@ TEST_CASE("box: rays from outside hit the face they enter at the right distance;
     t.report();
 }
 
-TEST_CASE("box: rays from inside hit the face they leave through; and rays from a face go on to the far side", "[03][box][inside][essential]") {
+TEST_CASE("box: rays from inside hit the face they leave through - and rays from a face go on to the far side", "[03][box][inside][essential]") {
     tally t("rays at boxes from inside");
     dice random(210);
     for (const box_shape& b : boxes) {
@@ -209,7 +209,7 @@ TEST_CASE("box: rays from inside hit the face they leave through; and rays from 
     t.report();
 }
 
-TEST_CASE("box: a ray that misses costs one box test and no face test; one that enters tests each face at most once", "[03][box][budget][essential]") {
+TEST_CASE("box: a ray that misses costs one box test and no face test - one that enters tests each face at most once", "[03][box][budget][essential]") {
     tally t("the cost of rays at boxes");
     dice random(220);
     for (const box_shape& b : boxes) {
@@ -356,7 +356,7 @@ TEST_CASE("box: contains() is true strictly inside and false on the faces and ou
     t.report();
 }
 
-TEST_CASE("box: min_point() and max_point() are the corners; and BOX { } is the unit cube", "[03][box][bounds][detail]") {
+TEST_CASE("box: min_point() and max_point() are the corners - and BOX { } is the unit cube", "[03][box][bounds][detail]") {
     tally t("the corners of boxes");
     for (const box_shape& b : boxes) {
         const auto box = make_box(b.lo, b.hi);
@@ -373,7 +373,7 @@ TEST_CASE("box: min_point() and max_point() are the corners; and BOX { } is the 
     t.report();
 }
 
-TEST_CASE("box: insert() and delete_all_children() are refused with the reason; and the box still works afterwards", "[03][box][refusals]") {
+TEST_CASE("box: insert() and delete_all_children() are refused with the reason - and the box still works afterwards", "[03][box][refusals]") {
     tally t("a box refuses to change");
     const box_shape b{point(-1, -1, -1), point(1, 1, 1)};
     auto box = make_box(b.lo, b.hi);
@@ -420,7 +420,7 @@ TEST_CASE("box: make_box() and the scene file refuse corners that are not finite
     t.report();
 }
 
-TEST_CASE("box: the surface keys of a BOX reach every face; and write() gives back the corners and the keys", "[03][box][scene_io]") {
+TEST_CASE("box: the surface keys of a BOX reach every face - and write() gives back the corners and the keys", "[03][box][scene_io]") {
     tally t("BOX in scene files");
     const vl::surface surf = full_precision_surface(1e-7 / 3);
     const box_shape b{point(-0.5 + 1e-13, -1.0 / 3, 0.25), point(2.0 / 3, 0.75, 1.5 + 1e-12)};

@@ -70,7 +70,7 @@ void check_rays(tally& t, const std::string& who, const rtab_composite& bvh, con
 
 // --- the nearest hit -----------------------------------------------------------------------
 
-TEST_CASE("bvh: rays from outside; from inside and along the axes get the nearest hit a LIST of the same children gives", "[03][bvh][hits][essential]") {
+TEST_CASE("bvh: rays from outside - from inside and along the axes get the nearest hit a LIST of the same children gives", "[03][bvh][hits][essential]") {
     tally t("rays at BVHs of random spheres");
     const std::size_t sizes[] = {1, 2, 3, 5, 8, 17, 60, 250};
     const int leaf_sizes[] = {4, 1, 2, 3, 8, 4, 1, 4};
@@ -84,7 +84,7 @@ TEST_CASE("bvh: rays from outside; from inside and along the axes get the neares
     t.report();
 }
 
-TEST_CASE("bvh: capsules; solid boxes and flat rectangles whose boxes have no thickness are found like in a LIST", "[03][bvh][hits]") {
+TEST_CASE("bvh: capsules - solid boxes and flat rectangles whose boxes have no thickness are found like in a LIST", "[03][bvh][hits]") {
     tally t("rays at BVHs of mixed children");
     dice random(310);
     for (int round = 0; round < 3; ++round) {
@@ -149,7 +149,7 @@ TEST_CASE("bvh: a hit inside a nested BVH or a LIST held by the BVH names the le
 
 // --- the three rules and the cost of a miss ---------------------------------------------------
 
-TEST_CASE("bvh: a ray through the root box that hits nothing gets composite_only of the BVH; one beside it a miss for one box test", "[03][bvh][rules][essential]") {
+TEST_CASE("bvh: a ray through the root box that hits nothing gets composite_only of the BVH - one beside it a miss for one box test", "[03][bvh][rules][essential]") {
     tally t("the rules for no hit");
     namer names;
     probe_set set;
@@ -254,15 +254,15 @@ void random_sphere_budget(std::size_t n, const measured& reference, std::size_t 
 }
 }  // namespace
 
-TEST_CASE("bvh: 1000 random small spheres cost about log2(N) tests per ray; like the reference BVH", "[03][bvh][budget][essential]") {
+TEST_CASE("bvh: 1000 random small spheres cost about log2(N) tests per ray - like the reference BVH", "[03][bvh][budget][essential]") {
     random_sphere_budget(1000, reference_1000, 400, 20, 15);
 }
 
-TEST_CASE("bvh: 10000 random small spheres cost about log2(N) tests per ray; like the reference BVH", "[03][bvh][budget][essential]") {
+TEST_CASE("bvh: 10000 random small spheres cost about log2(N) tests per ray - like the reference BVH", "[03][bvh][budget][essential]") {
     random_sphere_budget(10000, reference_10000, 400, 20, 15);
 }
 
-TEST_CASE("bvh: 100000 random small spheres cost about log2(N) tests per ray; like the reference BVH", "[03][bvh][budget][essential]") {
+TEST_CASE("bvh: 100000 random small spheres cost about log2(N) tests per ray - like the reference BVH", "[03][bvh][budget][essential]") {
     random_sphere_budget(100000, reference_100000, 100, 10, 10);
 }
 
@@ -290,7 +290,7 @@ TEST_CASE("bvh: long thin capsules in random directions cost no more than with t
     check_budget(scene, 3000, c, 12, 20, reference_needles);
 }
 
-TEST_CASE("bvh: along a row of spheres only the first is tested: near-first; and boxes beyond the best hit are skipped", "[03][bvh][budget][essential]") {
+TEST_CASE("bvh: along a row of spheres only the first is tested: near-first - and boxes beyond the best hit are skipped", "[03][bvh][budget][essential]") {
     probe_set set;
     auto bvh = make_bvh();
     spheres_in_a_row(set, *bvh, 1000);
@@ -312,7 +312,7 @@ TEST_CASE("bvh: along a row of spheres only the first is tested: near-first; and
 
 // The budgets count tests; this checks that the counted tests are the work (see
 // bvh_time_growth() in bvh_scenes.hh; every budget above checks it too).
-TEST_CASE("bvh: the time a ray takes grows with log2(N) as its counted tests do; not with N", "[03][bvh][budget]") {
+TEST_CASE("bvh: the time a ray takes grows with log2(N) as its counted tests do - not with N", "[03][bvh][budget]") {
     const time_growth& g = bvh_time_growth();
     if (std::getenv("VL_MEASURE"))
         std::printf("MEASURE time per ray: %.3g us at 1000, %.3g us at 64000, growth %.3g; tests %.4g, %.4g; "
@@ -363,7 +363,7 @@ TEST_CASE("bvh: with leaf_size K a ray that hits one isolated child tests at mos
     t.report();
 }
 
-TEST_CASE("bvh: with leaf_size K; N children in one place make a tree of at least N / K leaves; each of whose boxes a ray through them tests", "[03][bvh][leaf_size]") {
+TEST_CASE("bvh: with leaf_size K - N children in one place make a tree of at least N / K leaves - each of whose boxes a ray through them tests", "[03][bvh][leaf_size]") {
     // N identical spheres: a ray through them enters every box. A tree whose leaves hold at
     // most K children has at least L = ceil(N / K) leaves, and a near-first walk tests the
     // root box and, when L > 1, the box of every leaf: at least 1 + L box tests, whatever
@@ -403,7 +403,7 @@ TEST_CASE("bvh: with leaf_size K; N children in one place make a tree of at leas
     t.report();
 }
 
-TEST_CASE("bvh: insert() after a ray rebuilds the tree; and delete_all_children() empties it", "[03][bvh][rebuild][essential]") {
+TEST_CASE("bvh: insert() after a ray rebuilds the tree - and delete_all_children() empties it", "[03][bvh][rebuild][essential]") {
     tally t("a BVH changed between rays");
     namer names;
     auto bvh = make_bvh();
@@ -501,7 +501,7 @@ TEST_CASE("bvh: four threads that intersect their first rays at the same time al
 
 // --- box, contains, refusals -------------------------------------------------------------------
 
-TEST_CASE("bvh: min_point() and max_point() are the union of the children's boxes; and contains() asks the children", "[03][bvh][bounds]") {
+TEST_CASE("bvh: min_point() and max_point() are the union of the children's boxes - and contains() asks the children", "[03][bvh][bounds]") {
     tally t("the BVH's box");
     dice random(350);
     probe_set set;
@@ -527,7 +527,7 @@ TEST_CASE("bvh: min_point() and max_point() are the union of the children's boxe
     t.report();
 }
 
-TEST_CASE("bvh: insert() refuses a child whose box is unknown and a null pointer; and make_bvh() a leaf_size outside 1 to 64", "[03][bvh][refusals][detail]") {
+TEST_CASE("bvh: insert() refuses a child whose box is unknown and a null pointer - and make_bvh() a leaf_size outside 1 to 64", "[03][bvh][refusals][detail]") {
     tally t("refusals");
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     auto bvh = make_bvh();
@@ -570,7 +570,7 @@ TEST_CASE("bvh: insert() refuses a child whose box is unknown and a null pointer
 
 // --- scene files ------------------------------------------------------------------------------
 
-TEST_CASE("bvh: BVH { leaf_size K ... } is read from a scene file; and write() gives it back with every child in insertion order", "[03][bvh][scene_io]") {
+TEST_CASE("bvh: BVH { leaf_size K ... } is read from a scene file - and write() gives it back with every child in insertion order", "[03][bvh][scene_io]") {
     tally t("BVH in scene files");
     dice random(360);
     std::string text = "BVH { leaf_size 3\n";

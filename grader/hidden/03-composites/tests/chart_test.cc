@@ -68,7 +68,7 @@ void point_of(std::set<std::string>& broken, const std::string& series, std::siz
 
 }  // namespace
 
-TEST_CASE("chart: composites: tests per ray against the number of random spheres; per structure", "[03][chart]") {
+TEST_CASE("chart: composites: tests per ray against the number of random spheres - per structure", "[03][chart]") {
     const std::vector<ray> rays = rays_through_cube(200, 901);
     const std::vector<ray> few_rays(rays.begin(), rays.begin() + 8);
     std::set<std::string> broken;

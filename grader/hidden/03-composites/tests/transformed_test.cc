@@ -123,7 +123,7 @@ std::vector<ray> rays_at(const rmat& m, const point& c, double radius, dice& ran
 
 }  // namespace
 
-TEST_CASE("transformed: t is the distance along the world ray for every matrix; and the object hit is the TRANSFORM itself", "[03][transformed][hits][essential]") {
+TEST_CASE("transformed: t is the distance along the world ray for every matrix - and the object hit is the TRANSFORM itself", "[03][transformed][hits][essential]") {
     tally t("rays at transformed spheres");
     dice random(400);
     const point c(0.25, -0.5, 0.75);
@@ -150,7 +150,7 @@ TEST_CASE("transformed: t is the distance along the world ray for every matrix; 
     t.report();
 }
 
-TEST_CASE("transformed: the normal is the child's normal taken to world space with the inverse transpose; made unit", "[03][transformed][normals][essential]") {
+TEST_CASE("transformed: the normal is the child's normal taken to world space with the inverse transpose - made unit", "[03][transformed][normals][essential]") {
     tally t("normals of transformed spheres");
     dice random(410);
     const point c(0, 0.5, -0.25);
@@ -181,7 +181,7 @@ TEST_CASE("transformed: the normal is the child's normal taken to world space wi
     t.report();
 }
 
-TEST_CASE("transformed: each ray intersects the child exactly once; and a child's composite_only comes back as composite_only of the TRANSFORM", "[03][transformed][rules][essential]") {
+TEST_CASE("transformed: each ray intersects the child exactly once - and a child's composite_only comes back as composite_only of the TRANSFORM", "[03][transformed][rules][essential]") {
     tally t("the child's tests and the rules");
     dice random(420);
     for (const placed& p : cases()) {
@@ -270,7 +270,7 @@ TEST_CASE("transformed: min_point() and max_point() are the box around the child
     t.report();
 }
 
-TEST_CASE("transformed: the surface members are the child's; and a hit on the TRANSFORM shows them", "[03][transformed][surface]") {
+TEST_CASE("transformed: the surface members are the child's - and a hit on the TRANSFORM shows them", "[03][transformed][surface]") {
     tally t("the surface of a TRANSFORM");
     const vl::surface surf = full_precision_surface(-1e-7 / 3);
     auto child = std::make_unique<probe_sphere>(point(0, 0, 0), 1);
@@ -287,7 +287,7 @@ TEST_CASE("transformed: the surface members are the child's; and a hit on the TR
     t.report();
 }
 
-TEST_CASE("transformed: a TRANSFORM without a child misses every ray; insert() gives it its one child and refuses a second", "[03][transformed][insert]") {
+TEST_CASE("transformed: a TRANSFORM without a child misses every ray - insert() gives it its one child and refuses a second", "[03][transformed][insert]") {
     tally t("TRANSFORM and insert()");
     auto tr = make_transformed(nullptr, to_matrix(r_translate(0, 0, -5)));
     const ray r(point(0, 0, 0), vector(0, 0, -1));
@@ -309,7 +309,7 @@ TEST_CASE("transformed: a TRANSFORM without a child misses every ray; insert() g
     t.report();
 }
 
-TEST_CASE("transformed: make_transformed() refuses a matrix that is singular; not affine or not finite", "[03][transformed][refusals][detail]") {
+TEST_CASE("transformed: make_transformed() refuses a matrix that is singular - not affine or not finite", "[03][transformed][refusals][detail]") {
     tally t("matrices that cannot place an object");
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
     const matrix bad[] = {to_matrix(r_scale(0, 1, 1)),
@@ -344,7 +344,7 @@ struct step_case {
 };
 }  // namespace
 
-TEST_CASE("transformed: the steps of a TRANSFORM apply in the order written; rotate turns right-handed in degrees; matrix reads 16 numbers row by row", "[03][transformed][scene_io][essential]") {
+TEST_CASE("transformed: the steps of a TRANSFORM apply in the order written - rotate turns right-handed in degrees - matrix reads 16 numbers row by row", "[03][transformed][scene_io][essential]") {
     tally t("TRANSFORM steps in scene files");
     rmat shear = r_identity();
     shear.e[0][2] = 0.5;
@@ -388,7 +388,7 @@ TEST_CASE("transformed: the steps of a TRANSFORM apply in the order written; rot
     t.report();
 }
 
-TEST_CASE("transformed: write() gives TRANSFORM { matrix M11 ... M44 CHILD }; which reads back as the same object", "[03][transformed][scene_io]") {
+TEST_CASE("transformed: write() gives TRANSFORM { matrix M11 ... M44 CHILD } - which reads back as the same object", "[03][transformed][scene_io]") {
     tally t("TRANSFORM written and read back");
     dice random(450);
     for (const placed& p : cases()) {

@@ -59,7 +59,7 @@ void check_like_sheet(tally& t, const world& w, const probe_ball& ball, const ra
 
 }  // namespace
 
-TEST_CASE("leaving: on the inside of a sphere the normal is negated; so a light inside lights the wall",
+TEST_CASE("leaving: on the inside of a sphere the normal is negated - so a light inside lights the wall",
           "[04][leaving][essential]") {
     tally t("rays inside a lit hollow sphere");
     dice random(4301);
@@ -107,7 +107,7 @@ TEST_CASE("leaving: the transmitted ray out of glass follows Snell's law with et
     t.report();
 }
 
-TEST_CASE("leaving: beyond the critical angle all the light is reflected; none transmitted", "[04][leaving][essential]") {
+TEST_CASE("leaving: beyond the critical angle all the light is reflected - none transmitted", "[04][leaving][essential]") {
     tally t("total internal reflection");
     for (const double ior : {1.33, 1.5, 2.4})
         for (const real extra : {0.5L, 5.0L, 20.0L, 40.0L}) {
@@ -125,7 +125,7 @@ TEST_CASE("leaving: beyond the critical angle all the light is reflected; none t
     t.report();
 }
 
-TEST_CASE("leaving: a ray at the critical angle is totally reflected; F = 1", "[04][leaving][essential]") {
+TEST_CASE("leaving: a ray at the critical angle is totally reflected - F = 1", "[04][leaving][essential]") {
     tally t("rays at the critical angle");
     for (const double ior : {1.25, 1.33, 1.5, 2.0, 2.4}) {
         bench b(glass(ior), true);
@@ -136,7 +136,7 @@ TEST_CASE("leaving: a ray at the critical angle is totally reflected; F = 1", "[
     t.report();
 }
 
-TEST_CASE("leaving: just below the critical angle F uses the cosine on the lower index's side; cos_t",
+TEST_CASE("leaving: just below the critical angle F uses the cosine on the lower index's side - cos_t",
           "[04][leaving][essential]") {
     tally t("rays just below the critical angle");
     for (const double ior : {1.33, 1.5, 2.0})
@@ -194,7 +194,7 @@ TEST_CASE("leaving: on either side of the critical angle light gets out below it
     t.report();
 }
 
-TEST_CASE("leaving: inside a glass sphere no light gets out beyond the critical angle; and 1 - F of it below",
+TEST_CASE("leaving: inside a glass sphere no light gets out beyond the critical angle - and 1 - F of it below",
           "[04][leaving]") {
     tally t("rays inside glass spheres");
     dice random(4303);
@@ -252,7 +252,7 @@ TEST_CASE("leaving: inside a glass sphere no light gets out beyond the critical 
     t.report();
 }
 
-TEST_CASE("leaving: whether a ray is inside is asked of its origin; not of the point it hits", "[04][leaving][detail]") {
+TEST_CASE("leaving: whether a ray is inside is asked of its origin - not of the point it hits", "[04][leaving][detail]") {
     tally t("spheres whose surface counts as inside");
     // These spheres' contains() is true on the surface itself (within 1e-9 of the radius):
     // only the ray's origin tells whether it comes from inside. Every light is on the side

@@ -142,7 +142,7 @@ TEST_CASE("local: with no light a surface shows ambient times its colour times k
     t.report();
 }
 
-TEST_CASE("local: the light's colour is filtered by the surface colour channel by channel; in the diffuse light and in the highlight",
+TEST_CASE("local: the light's colour is filtered by the surface colour channel by channel - in the diffuse light and in the highlight",
           "[04][local][essential]") {
     tally t("coloured lights on coloured surfaces");
     const color lights[] = {color(1, 0, 0), color(0.2, 0.9, 0.4), color(0.5, 0.5, 1)};
@@ -177,7 +177,7 @@ TEST_CASE("local: the highlight is ksr times the cosine of the half angle to the
     t.report();
 }
 
-TEST_CASE("local: the highlight narrows as n grows: n = 1; 10; 100 and 1000 at the same half angle",
+TEST_CASE("local: the highlight narrows as n grows: n = 1 - 10 - 100 and 1000 at the same half angle",
           "[04][local]") {
     tally t("highlights with several exponents");
     for (const double n : {1.0, 10.0, 100.0, 1000.0})
@@ -225,7 +225,7 @@ TEST_CASE("local: a flat object seen from the side its normal points away from i
     t.report();
 }
 
-TEST_CASE("local: trace() does not clamp; so bright lights give values above 1", "[04][local]") {
+TEST_CASE("local: trace() does not clamp - so bright lights give values above 1", "[04][local]") {
     tally t("bright lights");
     const surface s = make_surface(color(1, 0.5, 1), 0.9, 0.8, 0, 4);
     check_plane(t, ray_through(point(-1, 2, 0), point(0, 0, 0)), point(0, 0, 0), vector(0, 1, 0), s, color(2, 2, 2),
@@ -235,7 +235,7 @@ TEST_CASE("local: trace() does not clamp; so bright lights give values above 1",
     t.report();
 }
 
-TEST_CASE("local: a ray that hits nothing sees the scene's background; at any depth", "[04][local][essential]") {
+TEST_CASE("local: a ray that hits nothing sees the scene's background - at any depth", "[04][local][essential]") {
     tally t("rays that hit nothing");
     for (const int depth : {0, 1, 5}) {
         world w;
@@ -282,7 +282,7 @@ TEST_CASE("local: lights do not fade with distance", "[04][local][detail]") {
     t.report();
 }
 
-TEST_CASE("local: several lights add up; each with its own direction and colour", "[04][local]") {
+TEST_CASE("local: several lights add up - each with its own direction and colour", "[04][local]") {
     tally t("several lights");
     dice random(4013);
     for (int k = 0; k < 30; ++k) {
@@ -297,7 +297,7 @@ TEST_CASE("local: several lights add up; each with its own direction and colour"
     t.report();
 }
 
-TEST_CASE("local: kdt; diffuse transmission; is not part of the model and changes nothing", "[04][local][detail]") {
+TEST_CASE("local: kdt - diffuse transmission - is not part of the model and changes nothing", "[04][local][detail]") {
     tally t("surfaces with kdt");
     for (const double kdt : {0.0, 0.5, 1.0}) {
         surface s = make_surface(color(0.8, 0.6, 0.4), 0.7, 0.2, 0, 10);

@@ -201,7 +201,7 @@ TEST_CASE("reflection: a mirror of weight ksr and colour c shows ksr * c times t
     t.report();
 }
 
-TEST_CASE("reflection: at depth 0 a mirror shows no reflection; at depth 1 it does", "[04][reflection][essential]") {
+TEST_CASE("reflection: at depth 0 a mirror shows no reflection - at depth 1 it does", "[04][reflection][essential]") {
     tally t("mirrors at depth 0 and 1");
     const color emitted(0.5, 0.75, 1);
     const surface s = make_surface(color(0.8, 0.8, 0.4), 0.25, 0.6);
@@ -359,7 +359,7 @@ TEST_CASE("reflection: at depth 0 glass shows neither reflection nor transmissio
     t.report();
 }
 
-TEST_CASE("reflection: glass with ksr and kst reflects ksr + kst F; at normal incidence ksr + kst R0",
+TEST_CASE("reflection: glass with ksr and kst reflects ksr + kst F - at normal incidence ksr + kst R0",
           "[04][reflection]") {
     tally t("the reflected weight of glass");
     for (const double ior : {1.5, 2.0})

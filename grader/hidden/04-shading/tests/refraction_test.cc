@@ -83,7 +83,7 @@ TEST_CASE("refraction: the transmitted ray entering glass follows Snell's law", 
     t.report();
 }
 
-TEST_CASE("refraction: the transmitted ray lands where Snell's law says; on a small emitter below the surface",
+TEST_CASE("refraction: the transmitted ray lands where Snell's law says - on a small emitter below the surface",
           "[04][refraction][essential]") {
     tally t("transmitted rays aimed at a small emitter");
     for (const double ior : {1.2, 1.5, 2.0})
@@ -155,7 +155,7 @@ TEST_CASE("refraction: towards 90 degrees from the normal F goes to 1", "[04][re
     t.report();
 }
 
-TEST_CASE("refraction: glass with both ksr and kst transmits kst (1 - F); and w_r + w_t = ksr + kst",
+TEST_CASE("refraction: glass with both ksr and kst transmits kst (1 - F) - and w_r + w_t = ksr + kst",
           "[04][refraction][essential]") {
     tally t("glass with ksr and kst");
     for (const double ior : {1.5, 2.0})

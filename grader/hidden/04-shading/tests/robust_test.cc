@@ -173,7 +173,7 @@ TEST_CASE("robust: one tracer used by two threads at once gives the colours it g
     t.report();
 }
 
-TEST_CASE("robust: the same ray traced again; after other rays; gives the same colour", "[04][robust][detail]") {
+TEST_CASE("robust: the same ray traced again - after other rays - gives the same colour", "[04][robust][detail]") {
     tally t("rays traced twice");
     world w;
     spheres_scene(w, vector(0, 0, 0), vl::rtab_component::default_zero_t);
@@ -192,7 +192,7 @@ TEST_CASE("robust: the same ray traced again; after other rays; gives the same c
     t.report();
 }
 
-TEST_CASE("robust: objects are used only through rtab_component; whatever their type_name() says", "[04][robust][detail]") {
+TEST_CASE("robust: objects are used only through rtab_component - whatever their type_name() says", "[04][robust][detail]") {
     tally t("objects whose type names lie");
     // The same scene twice: once with probes named as probes, once with the same probes
     // calling themselves SPHERE, PLANE and POLYGON. Nothing may change.

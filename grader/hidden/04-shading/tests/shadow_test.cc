@@ -92,7 +92,7 @@ TEST_CASE("shadow: a point behind a blocker gets the ambient light only", "[04][
     t.report();
 }
 
-TEST_CASE("shadow: objects beyond the light; on the line to it or beside it; cast no shadow", "[04][shadow][essential]") {
+TEST_CASE("shadow: objects beyond the light - on the line to it or beside it - cast no shadow", "[04][shadow][essential]") {
     tally t("blockers beyond the light");
     world w = floor_world();
     w.light(color(1, 0.9, 0.8), point(0, 2, 0));
@@ -164,7 +164,7 @@ TEST_CASE("shadow: a blocker just before the light blocks it and one just beyond
     t.report();
 }
 
-TEST_CASE("shadow: the shadow ray reaches as far as the light; however far it is", "[04][shadow][detail]") {
+TEST_CASE("shadow: the shadow ray reaches as far as the light - however far it is", "[04][shadow][detail]") {
     tally t("far lights and far blockers");
     for (const double h : {100.0, 1e4}) {
         world w = floor_world();
