@@ -121,13 +121,30 @@ void endpoint::queue(kind k, std::uint64_t number, const std::vector<char>& body
     if (!body.empty()) std::memcpy(p + sizeof length + header_bytes, body.data(), body.size());
 }
 
-void endpoint::send(kind k, std::uint64_t number, const std::vector<char>& body) {
+void endpoint::enqueue(kind k, std::uint64_t number, const std::vector<char>& body) {
     if (body.size() + header_bytes + sizeof(std::uint32_t) > max_message_bytes)
         throw protocol_error("a message of " + std::to_string(body.size()) + " bytes is too large to send");
     if (queued_.size() + body.size() + header_bytes + sizeof(std::uint32_t) > max_message_bytes) flush();
     queue(k, number, body);
+}
+
+void endpoint::send(kind k, std::uint64_t number, const std::vector<char>& body) {
+    enqueue(k, number, body);
     flush();
 }
+
+namespace {
+
+/// A call's body: the operation's number, then its arguments.
+std::vector<char> call_body(op_id op, const message_writer& args) {
+    const std::vector<char>& a = args.bytes();
+    std::vector<char> body(sizeof op + a.size());
+    std::memcpy(body.data(), &op, sizeof op);
+    if (!a.empty()) std::memcpy(body.data() + sizeof op, a.data(), a.size());
+    return body;
+}
+
+}  // namespace
 
 void endpoint::flush() {
     if (queued_.empty()) return;
@@ -204,24 +221,13 @@ void endpoint::serve_post(frame& f) {
 
 void endpoint::post(op_id op, const message_writer& args) {
     if (!broken_.empty()) throw protocol_error(broken_);
-    const std::vector<char>& a = args.bytes();
-    std::vector<char> body(sizeof op + a.size());
-    std::memcpy(body.data(), &op, sizeof op);
-    if (!a.empty()) std::memcpy(body.data() + sizeof op, a.data(), a.size());
-    if (body.size() + header_bytes + sizeof(std::uint32_t) > max_message_bytes)
-        throw protocol_error("a message of " + std::to_string(body.size()) + " bytes is too large to send");
-    if (queued_.size() + body.size() + header_bytes + sizeof(std::uint32_t) > max_message_bytes) flush();
-    queue(kind::post, 0, body);
+    enqueue(kind::post, 0, call_body(op, args));
 }
 
 message_reader endpoint::call(op_id op, const message_writer& args, const char* what) {
     if (!broken_.empty()) throw protocol_error(broken_);
     const std::uint64_t number = ++next_call_;
-    const std::vector<char>& a = args.bytes();
-    std::vector<char> body(sizeof op + a.size());
-    std::memcpy(body.data(), &op, sizeof op);
-    if (!a.empty()) std::memcpy(body.data() + sizeof op, a.data(), a.size());
-    send(kind::call, number, body);
+    send(kind::call, number, call_body(op, args));
     for (;;) {
         frame f;
         if (!receive(f)) broken(peer_ + " ended (it crashed or ended itself) while answering " + what);

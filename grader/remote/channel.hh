@@ -115,6 +115,9 @@ private:
     bool receive(frame& f);
     /// Sends what is queued and this frame, in one box.
     void send(kind k, std::uint64_t number, const std::vector<char>& body);
+    /// Queues this frame to go with the next one sent (a box that is full goes first);
+    /// throws protocol_error for a frame too large to cross.
+    void enqueue(kind k, std::uint64_t number, const std::vector<char>& body);
     /// Adds a frame to what the next send() puts in the box.
     void queue(kind k, std::uint64_t number, const std::vector<char>& body);
     /// Puts what is queued in the box.

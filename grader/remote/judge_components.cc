@@ -272,10 +272,10 @@ void forget_stand_in(handle h) {
     table().by_handle.erase(h);
 }
 
-namespace {
-
-/// lend() with `t`'s mutex held.
-handle lend_locked(lent_table& t, const rtab_component* o, handle root) {
+handle lend(const rtab_component* o, handle root) {
+    if (o == nullptr) return 0;
+    lent_table& t = lent();
+    const std::lock_guard<std::mutex> lock(t.mutex);
     if (const auto it = t.by_object.find(o); it != t.by_object.end()) return it->second;
     const handle h = lent_bit | ++t.last;
     t.by_handle[h] = o;
@@ -285,15 +285,6 @@ handle lend_locked(lent_table& t, const rtab_component* o, handle root) {
         t.root[h] = root;
     }
     return h;
-}
-
-}  // namespace
-
-handle lend(const rtab_component* o, handle root) {
-    if (o == nullptr) return 0;
-    lent_table& t = lent();
-    const std::lock_guard<std::mutex> lock(t.mutex);
-    return lend_locked(t, o, root);
 }
 
 void unlend(const rtab_component* o) noexcept {
@@ -336,13 +327,24 @@ description describe(const rtab_component& o) {
     return d;
 }
 
+namespace {
+
+/// Keeps `made` under the new handle `h` (no root), with `t`'s mutex held.
+void keep_locked(lent_table& t, handle h, std::unique_ptr<rtab_component> made) {
+    if (t.made.size() >= c::max_made)
+        throw protocol_error("your code had the judge make more than " + std::to_string(c::max_made) + " objects");
+    t.by_handle[h] = made.get();
+    t.by_object[made.get()] = h;
+    t.made[h] = std::move(made);
+}
+
+}  // namespace
+
 handle keep_made(std::unique_ptr<rtab_component> made) {
     lent_table& t = lent();
     const std::lock_guard<std::mutex> lock(t.mutex);
-    if (t.made.size() >= c::max_made)
-        throw protocol_error("your code had the judge make more than " + std::to_string(c::max_made) + " objects");
-    const handle h = lend_locked(t, made.get(), 0);
-    t.made[h] = std::move(made);
+    const handle h = lent_bit | ++t.last;  // a new object: lent under no root
+    keep_locked(t, h, std::move(made));
     return h;
 }
 
@@ -351,13 +353,8 @@ void keep_made_as(handle h, std::unique_ptr<rtab_component> made) {
         throw protocol_error("your code's process named a sphere it made with a handle it may not choose");
     lent_table& t = lent();
     const std::lock_guard<std::mutex> lock(t.mutex);
-    if (t.made.size() >= c::max_made)
-        throw protocol_error("your code had the judge make more than " + std::to_string(c::max_made) + " objects");
-    if (t.by_handle.contains(h))
-        throw protocol_error("your code's process named two objects with one handle");
-    t.by_handle[h] = made.get();
-    t.by_object[made.get()] = h;
-    t.made[h] = std::move(made);
+    if (t.by_handle.contains(h)) throw protocol_error("your code's process named two objects with one handle");
+    keep_locked(t, h, std::move(made));
 }
 
 void released_by_subject(handle h) {

@@ -413,7 +413,7 @@ std::unique_ptr<primitive> made_by_judge(message_reader& answer) {
     const auto d = answer.get<description>();
     answer.finish();
     if ((h & lent_bit) == 0 || d.primitive == 0) throw protocol_error("the judge made no primitive");
-    return std::make_unique<lent_primitive>(h, std::move(type), d, true);
+    return made_by_judge(h, std::move(type), d);
 }
 
 std::unique_ptr<primitive> made_by_judge(handle h, std::string type, const description& d) {

@@ -17,38 +17,38 @@ namespace {
 
 namespace c = remote::calls_components;
 
-std::unique_ptr<primitive> made(c::lent_op op, const remote::message_writer& args, const char* what) {
+/// The judge's end of this thread's connection, for the factory `what`.
+remote::endpoint& judge_for(const char* what) {
     remote::endpoint* judge = remote::judge_here();
     if (judge == nullptr)
         throw remote::protocol_error(std::string(what) + " was called on a thread your code started itself: "
                                      "the grader makes shapes only on the threads the tests call on");
-    remote::message_reader answer = judge->call(op, args, what);
+    return *judge;
+}
+
+std::unique_ptr<primitive> made(c::lent_op op, const remote::message_writer& args, const char* what) {
+    remote::message_reader answer = judge_for(what).call(op, args, what);
     return remote::made_by_judge(answer);
 }
 
 }  // namespace
 
 std::unique_ptr<primitive> make_sphere(const point& center, double radius) {
-    remote::endpoint* judge = remote::judge_here();
-    if (judge == nullptr)
-        throw remote::protocol_error("make_sphere was called on a thread your code started itself: "
-                                     "the grader makes shapes only on the threads the tests call on");
+    remote::endpoint& judge = judge_for("make_sphere");
     // Refused here as the judge's make_sphere() would refuse it: the same check.
     shapes::sphere_base::check(center, radius);
     // What the judge's sphere will answer without being asked: its box and ball about the
     // homogenized centre (shapes::sphere_base), and the surface every primitive starts with.
     const point c = center.homogenized();
     const vector half(radius, radius, radius);
-    remote::description d;
-    d.composite = 0;
+    remote::description d;  // not a composite; its surface the default one
     d.primitive = 1;
     d.min = c - half;
     d.max = c + half;
     d.ball = {c, radius};
-    d.surf = surface{};
     static std::atomic<remote::handle> last{0};
     const remote::handle h = c::lent_bit | c::posted_bit | ++last;
-    judge->post(c::posted_sphere, remote::message_writer().put(h).put(center).put(radius));
+    judge.post(c::posted_sphere, remote::message_writer().put(h).put(center).put(radius));
     return remote::made_by_judge(h, "SPHERE", d);
 }
 std::unique_ptr<primitive> make_plane(const point& point_on_plane, const vector& normal) {

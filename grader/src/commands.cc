@@ -51,13 +51,15 @@ grade_options take_grade_options(arguments& args) {
     vl::grader::grade_options o;
     o.weaker_sandbox = take_flag(args, "--weaker-sandbox");
     o.keep_work = take_flag(args, "--keep-work");
-    // Items are runs of their own, so they can go side by side. A test is two processes
-    // that take turns (the judge and the subject, each waiting briefly awake for the
-    // other's answer), so by default one item per two CPUs, at most 4 (a roster that
-    // grades several submissions at once gives each a share).
     const std::string jobs = take_option(args, "--jobs");
-    o.item_jobs = jobs.empty() ? std::clamp(usable_cpus() / 2, 1, 4) : positive_number(jobs, "--jobs");
+    o.item_jobs = jobs.empty() ? default_item_jobs(1) : positive_number(jobs, "--jobs");
     return o;
+}
+
+int default_item_jobs(int grades_at_once) {
+    // A test is two processes that take turns (the judge and the subject, each waiting
+    // briefly awake for the other's answer): one item per two CPUs of the grade's share.
+    return std::clamp(usable_cpus() / (2 * std::max(grades_at_once, 1)), 1, 4);
 }
 
 void expect_count(const arguments& args, std::size_t n) {

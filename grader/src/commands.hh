@@ -44,6 +44,9 @@ graded_submission grade_into(const installation& in, const std::string& assignme
 std::filesystem::path default_out(const installation& in, const std::string& assignment, const std::string& submission);
 
 /// The CPUs this process may use (a cluster's allocation, taskset), at least 1.
+/// How many items (tests, scenes) a grade runs at once by default when `grades_at_once`
+/// grades share this process's CPUs: one per two CPUs of its share, 1 to 4.
+int default_item_jobs(int grades_at_once);
 int usable_cpus();
 
 /// This program, for the roster to run once per submission.

@@ -73,7 +73,7 @@ struct grade_options {
     bool keep_work = false;       ///< keep out/work/ (sources, objects, programs) for a look
     double budget_seconds = 0;    ///< the whole grade's time; 0: the rubric's grade_budget_seconds
     double limits_scale = 1;      ///< the rubric's test and render time limits, times this (calibrate --limits-scale)
-    int item_jobs = 1;            ///< how many items (tests, scenes) run at once (--jobs; default: one per CPU)
+    int item_jobs = 1;            ///< how many items (tests, scenes) run at once (--jobs; commands: default_item_jobs())
 };
 
 /// Grades `submission` for `stage`. Problems of the submission become failed items;

@@ -121,10 +121,9 @@ void start_grade(running_grade& g, const installation& in, const stage_info& sta
     std::vector<std::string> args = {o.grader_program.string(), "grade", stage.name, g.entry.submission.string(), "--out",
                                      g.work.string()};
     if (o.weaker_sandbox) args.push_back("--weaker-sandbox");
-    // The CPUs are shared among the grades running at once: each runs one item per two of
-    // its share (a test is a judge and a subject that take turns).
+    // The CPUs are shared among the grades running at once.
     args.push_back("--jobs");
-    args.push_back(std::to_string(std::max(1, usable_cpus() / (2 * std::max(o.jobs, 1)))));
+    args.push_back(std::to_string(default_item_jobs(o.jobs)));
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
